@@ -1,0 +1,79 @@
+//! Solid boundaries as *fixed ghost particles* (thesis §7.1.1): the boundary supplies, at time t, the ghost
+//! positions, their interpolation (mirror) points inside the fluid and the wall velocity and acceleration
+//! there. The solver fills in the ghosts' velocity, pressure and density from the fluid by MLS
+//! ([`crate::sph::mirror`]). This file knows nothing of hulls or file formats.
+
+use nalgebra::SVector;
+
+/// Geometry of the ghost particles of one boundary at one instant.
+#[derive(Clone, Debug, Default)]
+pub struct GhostGeometry<const D: usize> {
+    pub pos: Vec<SVector<f64, D>>,
+    /// Mirror point inside the fluid whose interpolated values set the ghost's (thesis Fig. 7.2).
+    pub interp: Vec<SVector<f64, D>>,
+    /// Wall velocity u_B at the ghost (m/s).
+    pub wall_vel: Vec<SVector<f64, D>>,
+    /// Wall acceleration du_B/dt at the ghost (m/s²), used in the Neumann condition (7.4).
+    pub wall_acc: Vec<SVector<f64, D>>,
+    /// Volume of each ghost, ds^D (m^D).
+    pub volume: Vec<f64>,
+}
+
+impl<const D: usize> GhostGeometry<D> {
+    pub fn len(&self) -> usize {
+        self.pos.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.pos.is_empty()
+    }
+    pub fn clear(&mut self) {
+        self.pos.clear();
+        self.interp.clear();
+        self.wall_vel.clear();
+        self.wall_acc.clear();
+        self.volume.clear();
+    }
+    pub fn append(&mut self, other: &GhostGeometry<D>) {
+        self.pos.extend_from_slice(&other.pos);
+        self.interp.extend_from_slice(&other.interp);
+        self.wall_vel.extend_from_slice(&other.wall_vel);
+        self.wall_acc.extend_from_slice(&other.wall_acc);
+        self.volume.extend_from_slice(&other.volume);
+    }
+}
+
+/// Anything that can produce fixed ghost particles: a tank wall, a moving wedge, a deforming hull section.
+pub trait Boundary<const D: usize>: Send + Sync {
+    /// A short name, used for force outputs.
+    fn name(&self) -> &str;
+    /// Whether the ghosts move or deform (if not, they are generated once).
+    fn moves(&self) -> bool;
+    /// Writes the ghost geometry at time `t` into `out` (cleared first by the caller).
+    fn ghosts(&self, t: f64, out: &mut GhostGeometry<D>);
+}
+
+/// Rigid motion of a wall.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum RigidMotion<const D: usize> {
+    Fixed,
+    /// Translation at constant velocity (m/s) from the initial position.
+    ConstantVelocity(SVector<f64, D>),
+}
+
+impl<const D: usize> RigidMotion<D> {
+    pub fn displacement(&self, t: f64) -> SVector<f64, D> {
+        match self {
+            RigidMotion::Fixed => SVector::zeros(),
+            RigidMotion::ConstantVelocity(v) => v * t,
+        }
+    }
+    pub fn velocity(&self, _t: f64) -> SVector<f64, D> {
+        match self {
+            RigidMotion::Fixed => SVector::zeros(),
+            RigidMotion::ConstantVelocity(v) => *v,
+        }
+    }
+    pub fn acceleration(&self, _t: f64) -> SVector<f64, D> {
+        SVector::zeros()
+    }
+}

@@ -1,0 +1,15 @@
+//! The δ-SPH solver core, generic over the spatial dimension `D`. It knows nothing of hulls, the CLI or
+//! file formats: boundaries come in through the [`boundary::Boundary`] trait.
+
+pub mod body_force;
+pub mod boundary;
+pub mod diagnostics;
+pub mod eos;
+pub mod equations;
+pub mod integrator;
+pub mod kernel;
+pub mod mls;
+pub mod neighbours;
+pub mod particles;
+pub mod polyline_wall;
+pub mod solver;

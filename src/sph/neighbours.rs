@@ -1,0 +1,199 @@
+//! Neighbour search: a cell list whose cell edge is the kernel support, built by a counting sort, and the
+//! brute-force O(N²) oracle it is tested against.
+
+use nalgebra::SVector;
+
+/// A uniform grid of cells of edge `cell` (= the kernel support) over the bounding box of the points.
+/// `sorted` holds point indices ordered by cell; the points of cell `c` are
+/// `sorted[start[c]..start[c + 1]]`, in increasing index order (the counting sort is stable), so every
+/// neighbour sum visits its neighbours in a fixed order whatever the thread count.
+#[derive(Clone, Debug)]
+pub struct CellList<const D: usize> {
+    origin: [f64; D],
+    cell: f64,
+    dims: [usize; D],
+    start: Vec<u32>,
+    sorted: Vec<u32>,
+    offsets: Vec<[isize; D]>,
+}
+
+impl<const D: usize> Default for CellList<D> {
+    fn default() -> Self {
+        CellList { origin: [0.0; D], cell: 1.0, dims: [1; D], start: vec![0, 0], sorted: vec![], offsets: neighbour_offsets::<D>() }
+    }
+}
+
+impl<const D: usize> CellList<D> {
+    /// Linear cell index of every point, with the grid laid over their bounding box.
+    pub fn build(points: &[SVector<f64, D>], cell: f64) -> Self {
+        let mut lo = [f64::INFINITY; D];
+        let mut hi = [f64::NEG_INFINITY; D];
+        for p in points {
+            for d in 0..D {
+                lo[d] = lo[d].min(p[d]);
+                hi[d] = hi[d].max(p[d]);
+            }
+        }
+        if points.is_empty() {
+            lo = [0.0; D];
+            hi = [0.0; D];
+        }
+        let mut dims = [1usize; D];
+        for d in 0..D {
+            dims[d] = (((hi[d] - lo[d]) / cell).floor() as usize + 1).max(1);
+        }
+        let ncell: usize = dims.iter().product();
+        let mut list = CellList {
+            origin: lo,
+            cell,
+            dims,
+            start: vec![0; ncell + 1],
+            sorted: vec![0; points.len()],
+            offsets: neighbour_offsets::<D>(),
+        };
+        // Counting sort by cell.
+        let keys: Vec<u32> = points.iter().map(|p| list.cell_of(p) as u32).collect();
+        for &k in &keys {
+            list.start[k as usize + 1] += 1;
+        }
+        for c in 0..ncell {
+            list.start[c + 1] += list.start[c];
+        }
+        let mut fill = list.start.clone();
+        for (i, &k) in keys.iter().enumerate() {
+            list.sorted[fill[k as usize] as usize] = i as u32;
+            fill[k as usize] += 1;
+        }
+        list
+    }
+
+    fn coords(&self, p: &SVector<f64, D>) -> [isize; D] {
+        let mut c = [0isize; D];
+        for d in 0..D {
+            c[d] = ((p[d] - self.origin[d]) / self.cell).floor() as isize;
+        }
+        c
+    }
+
+    fn cell_of(&self, p: &SVector<f64, D>) -> usize {
+        let c = self.coords(p);
+        let mut idx = 0usize;
+        for d in (0..D).rev() {
+            let cd = c[d].clamp(0, self.dims[d] as isize - 1) as usize;
+            idx = idx * self.dims[d] + cd;
+        }
+        idx
+    }
+
+    /// Point indices in cell order: the permutation that sorts points by cell (for memory locality).
+    pub fn order(&self) -> &[u32] {
+        &self.sorted
+    }
+
+    /// Calls `f(j, x − x_j, |x − x_j|)` for every point j with |x − x_j| < radius (radius ≤ cell edge).
+    #[inline]
+    pub fn for_each_within<F>(&self, points: &[SVector<f64, D>], x: &SVector<f64, D>, radius: f64, mut f: F)
+    where
+        F: FnMut(usize, SVector<f64, D>, f64),
+    {
+        debug_assert!(radius <= self.cell * (1.0 + 1e-12));
+        let r2 = radius * radius;
+        let c = self.coords(x);
+        for off in &self.offsets {
+            let mut idx = 0usize;
+            let mut inside = true;
+            for d in (0..D).rev() {
+                let cd = c[d] + off[d];
+                if cd < 0 || cd >= self.dims[d] as isize {
+                    inside = false;
+                    break;
+                }
+                idx = idx * self.dims[d] + cd as usize;
+            }
+            if !inside {
+                continue;
+            }
+            let (a, b) = (self.start[idx] as usize, self.start[idx + 1] as usize);
+            for &j in &self.sorted[a..b] {
+                let j = j as usize;
+                let rij = x - points[j];
+                let d2 = rij.norm_squared();
+                if d2 < r2 {
+                    f(j, rij, d2.sqrt());
+                }
+            }
+        }
+    }
+}
+
+/// The 3^D cell offsets {-1, 0, 1}^D, in a fixed order.
+fn neighbour_offsets<const D: usize>() -> Vec<[isize; D]> {
+    let n = 3usize.pow(D as u32);
+    (0..n)
+        .map(|mut k| {
+            let mut o = [0isize; D];
+            for od in o.iter_mut() {
+                *od = (k % 3) as isize - 1;
+                k /= 3;
+            }
+            o
+        })
+        .collect()
+}
+
+/// The O(N²) oracle: indices of all points within `radius` of `x`, in increasing order.
+pub fn brute_force_within<const D: usize>(points: &[SVector<f64, D>], x: &SVector<f64, D>, radius: f64) -> Vec<usize> {
+    (0..points.len()).filter(|&j| (x - points[j]).norm() < radius).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Deterministic pseudo-random numbers in [0, 1) (a 64-bit LCG), so the test needs no extra crate.
+    fn lcg(seed: &mut u64) -> f64 {
+        *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (*seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    #[test]
+    fn cell_list_matches_brute_force_in_2d_and_3d() {
+        let mut seed = 7u64;
+        let pts2: Vec<SVector<f64, 2>> = (0..800).map(|_| SVector::from([lcg(&mut seed) * 3.0, lcg(&mut seed)])).collect();
+        let list = CellList::build(&pts2, 0.13);
+        for x in pts2.iter().step_by(7) {
+            let mut got = vec![];
+            list.for_each_within(&pts2, x, 0.13, |j, _, _| got.push(j));
+            got.sort();
+            assert_eq!(got, brute_force_within(&pts2, x, 0.13));
+        }
+        let pts3: Vec<SVector<f64, 3>> = (0..600)
+            .map(|_| SVector::from([lcg(&mut seed), lcg(&mut seed) * 2.0, lcg(&mut seed)]))
+            .collect();
+        let list3 = CellList::build(&pts3, 0.2);
+        for x in pts3.iter().step_by(5) {
+            let mut got = vec![];
+            list3.for_each_within(&pts3, x, 0.2, |j, _, _| got.push(j));
+            got.sort();
+            assert_eq!(got, brute_force_within(&pts3, x, 0.2));
+        }
+        // A query point outside the bounding box still finds what is near it.
+        let out = SVector::from([-0.05, 0.5]);
+        let mut got = vec![];
+        list.for_each_within(&pts2, &out, 0.13, |j, _, _| got.push(j));
+        got.sort();
+        assert_eq!(got, brute_force_within(&pts2, &out, 0.13));
+    }
+
+    #[test]
+    fn order_is_a_permutation_grouped_by_cell() {
+        let mut seed = 3u64;
+        let pts: Vec<SVector<f64, 2>> = (0..300).map(|_| SVector::from([lcg(&mut seed), lcg(&mut seed)])).collect();
+        let list = CellList::build(&pts, 0.1);
+        let mut o: Vec<u32> = list.order().to_vec();
+        let keys: Vec<usize> = o.iter().map(|&i| list.cell_of(&pts[i as usize])).collect();
+        assert!(keys.windows(2).all(|w| w[0] <= w[1]));
+        o.sort();
+        assert_eq!(o, (0..300).collect::<Vec<u32>>());
+    }
+}

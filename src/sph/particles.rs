@@ -1,0 +1,56 @@
+//! Fluid particles stored as a structure of arrays.
+
+use nalgebra::SVector;
+
+/// The fluid particles. Every field has one entry per particle; `id` is the particle's index at creation,
+/// kept through the re-ordering by cell so outputs can follow a particle.
+#[derive(Clone, Debug, Default)]
+pub struct Fluid<const D: usize> {
+    pub pos: Vec<SVector<f64, D>>,
+    pub vel: Vec<SVector<f64, D>>,
+    /// Density ρ (kg/m³).
+    pub rho: Vec<f64>,
+    /// Mass m (kg per m^{3−D}, i.e. per unit depth in 2D).
+    pub mass: Vec<f64>,
+    pub id: Vec<u32>,
+    /// A free scalar carried with the particle (the built-in cases store the initial depth), for colouring.
+    pub tag: Vec<f64>,
+}
+
+impl<const D: usize> Fluid<D> {
+    pub fn len(&self) -> usize {
+        self.pos.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.pos.is_empty()
+    }
+
+    pub fn push(&mut self, pos: SVector<f64, D>, vel: SVector<f64, D>, rho: f64, mass: f64, tag: f64) {
+        self.id.push(self.pos.len() as u32);
+        self.pos.push(pos);
+        self.vel.push(vel);
+        self.rho.push(rho);
+        self.mass.push(mass);
+        self.tag.push(tag);
+    }
+
+    /// Re-orders every field so that new index k holds old index `order[k]`.
+    pub fn permute(&mut self, order: &[u32]) {
+        fn apply<T: Copy>(v: &mut Vec<T>, order: &[u32]) {
+            let new: Vec<T> = order.iter().map(|&k| v[k as usize]).collect();
+            *v = new;
+        }
+        apply(&mut self.pos, order);
+        apply(&mut self.vel, order);
+        apply(&mut self.rho, order);
+        apply(&mut self.mass, order);
+        apply(&mut self.id, order);
+        apply(&mut self.tag, order);
+    }
+
+    /// Total mass.
+    pub fn total_mass(&self) -> f64 {
+        self.mass.iter().sum()
+    }
+}

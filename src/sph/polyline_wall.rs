@@ -1,0 +1,246 @@
+//! A 2D wall given as a polyline with the fluid on one side, turned into layers of fixed ghost particles
+//! (thesis §7.1.1, steps a–d): the profile is offset towards the solid by (k + ½) ds, k = 0, 1, …, until the
+//! layers cover the kernel support, and each offset profile is sampled at spacing ds.
+//!
+//! Interpolation points are the mirror images of the ghosts through their *nearest point on the wall*.
+//! Along a straight side this is the mirror in the wall; in the region facing a convex corner of the solid
+//! (e.g. the inner side of a tank corner, fluid angle π/2) the nearest point is the vertex, so the mirror is
+//! the central symmetry of Fig. 7.3, and adjacent ghosts keep adjacent interpolation points.
+//! Offset profiles are joined at corners by mitres; corners (turns above 30°) split the profile into chains
+//! that are sampled from the corner outwards, so a rectangular tank gets ghosts on the fluid's own lattice.
+//! Fluid angles above π (Figs. 7.4–7.5: bisector ghosts, narrow angles) are not treated specially yet.
+
+use super::boundary::{Boundary, GhostGeometry, RigidMotion};
+use nalgebra::Vector2;
+
+type V2 = Vector2<f64>;
+
+/// Which side of the polyline (walking from its first point to its last) the fluid is on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FluidSide {
+    Left,
+    Right,
+}
+
+/// A rigid 2D polyline wall.
+#[derive(Clone, Debug)]
+pub struct PolylineWall {
+    pub name: String,
+    pub points: Vec<V2>,
+    pub fluid_side: FluidSide,
+    pub motion: RigidMotion<2>,
+    /// Ghost geometry at t = 0.
+    base: GhostGeometry<2>,
+}
+
+/// Turn angle above which a vertex splits the offset profile into separately sampled chains (radians).
+const CORNER_TURN: f64 = 30.0 * std::f64::consts::PI / 180.0;
+
+impl PolylineWall {
+    /// Builds the wall and its ghost layers for particle spacing `ds` (m) and kernel support `support` (m).
+    pub fn new(name: &str, points: Vec<V2>, fluid_side: FluidSide, motion: RigidMotion<2>, ds: f64, support: f64) -> Self {
+        let mut wall = PolylineWall {
+            name: name.to_string(),
+            points,
+            fluid_side,
+            motion,
+            base: GhostGeometry::default(),
+        };
+        wall.base = ghost_layers(&wall.points, fluid_side, ds, support);
+        wall
+    }
+
+    /// Ghost geometry at t = 0 (for tests and plots).
+    pub fn base_ghosts(&self) -> &GhostGeometry<2> {
+        &self.base
+    }
+}
+
+impl Boundary<2> for PolylineWall {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn moves(&self) -> bool {
+        self.motion != RigidMotion::Fixed
+    }
+    fn ghosts(&self, t: f64, out: &mut GhostGeometry<2>) {
+        let d = self.motion.displacement(t);
+        let v = self.motion.velocity(t);
+        let a = self.motion.acceleration(t);
+        out.pos.extend(self.base.pos.iter().map(|p| p + d));
+        out.interp.extend(self.base.interp.iter().map(|p| p + d));
+        out.wall_vel.extend(self.base.pos.iter().map(|_| v));
+        out.wall_acc.extend(self.base.pos.iter().map(|_| a));
+        out.volume.extend_from_slice(&self.base.volume);
+    }
+}
+
+/// Unit normal of each segment pointing away from the fluid (into the solid).
+pub fn solid_normals(points: &[V2], side: FluidSide) -> Vec<V2> {
+    points
+        .windows(2)
+        .map(|w| {
+            let t = (w[1] - w[0]).normalize();
+            let left = V2::new(-t.y, t.x);
+            match side {
+                FluidSide::Left => -left,
+                FluidSide::Right => left,
+            }
+        })
+        .collect()
+}
+
+/// Offset of the polyline by `d` towards the solid, with mitred joints.
+fn offset_polyline(points: &[V2], normals: &[V2], d: f64) -> Vec<V2> {
+    let n = points.len();
+    (0..n)
+        .map(|k| {
+            if k == 0 {
+                points[0] + normals[0] * d
+            } else if k == n - 1 {
+                points[k] + normals[k - 1] * d
+            } else {
+                let (a, b) = (normals[k - 1], normals[k]);
+                let denom = (1.0 + a.dot(&b)).max(0.1);
+                points[k] + (a + b) * (d / denom)
+            }
+        })
+        .collect()
+}
+
+fn is_corner(normals: &[V2], k: usize) -> bool {
+    // Vertex k joins segments k-1 and k.
+    let c = normals[k - 1].dot(&normals[k]).clamp(-1.0, 1.0);
+    c.acos() > CORNER_TURN
+}
+
+/// Point at arc length s along a chain of points.
+fn point_at(chain: &[V2], cum: &[f64], s: f64) -> V2 {
+    let k = match cum.iter().position(|&c| c >= s) {
+        Some(0) => return chain[0],
+        Some(k) => k,
+        None => return *chain.last().unwrap(),
+    };
+    let seg = cum[k] - cum[k - 1];
+    let f = if seg > 0.0 { (s - cum[k - 1]) / seg } else { 0.0 };
+    chain[k - 1] + (chain[k] - chain[k - 1]) * f
+}
+
+/// Samples one offset profile at spacing ds, chain by chain (see module doc).
+fn sample_offset(q: &[V2], normals: &[V2], ds: f64) -> Vec<V2> {
+    let n = q.len();
+    let mut breaks = vec![0usize];
+    for k in 1..n - 1 {
+        if is_corner(normals, k) {
+            breaks.push(k);
+        }
+    }
+    breaks.push(n - 1);
+    let mut out = vec![];
+    for (b, w) in breaks.windows(2).enumerate() {
+        let (a, e) = (w[0], w[1]);
+        let chain = &q[a..=e];
+        let mut cum = vec![0.0];
+        for s in chain.windows(2) {
+            cum.push(cum.last().unwrap() + (s[1] - s[0]).norm());
+        }
+        let len = *cum.last().unwrap();
+        let start_corner = b > 0;
+        let end_corner = b + 2 < breaks.len();
+        let eps = 1e-9 * ds;
+        let arcs: Vec<f64> = match (start_corner, end_corner) {
+            (true, true) => {
+                let m = ((len / ds).round() as usize).max(1);
+                (0..m).map(|k| k as f64 * len / m as f64).collect()
+            }
+            (true, false) | (false, false) => {
+                let m = ((len + eps) / ds).floor() as usize;
+                (0..=m).map(|k| k as f64 * ds).collect()
+            }
+            (false, true) => {
+                let m = ((len + eps) / ds).floor() as usize;
+                (1..=m).rev().map(|k| len - k as f64 * ds).collect()
+            }
+        };
+        out.extend(arcs.into_iter().map(|s| point_at(chain, &cum, s)));
+    }
+    out
+}
+
+/// Nearest point on the polyline to `x`.
+pub fn nearest_point(points: &[V2], x: &V2) -> V2 {
+    let mut best = points[0];
+    let mut best_d2 = f64::INFINITY;
+    for w in points.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let ab = b - a;
+        let l2 = ab.norm_squared();
+        let t = if l2 > 0.0 { ((x - a).dot(&ab) / l2).clamp(0.0, 1.0) } else { 0.0 };
+        let p = a + ab * t;
+        let d2 = (x - p).norm_squared();
+        if d2 < best_d2 {
+            best_d2 = d2;
+            best = p;
+        }
+    }
+    best
+}
+
+/// The ghost layers of a polyline: offsets (k + ½) ds for all k with (k + ½) ds < support.
+pub fn ghost_layers(points: &[V2], side: FluidSide, ds: f64, support: f64) -> GhostGeometry<2> {
+    let mut g = GhostGeometry::default();
+    if points.len() < 2 {
+        return g;
+    }
+    let normals = solid_normals(points, side);
+    let mut k = 0;
+    while (k as f64 + 0.5) * ds < support {
+        let d = (k as f64 + 0.5) * ds;
+        let q = offset_polyline(points, &normals, d);
+        for p in sample_offset(&q, &normals, ds) {
+            let foot = nearest_point(points, &p);
+            g.pos.push(p);
+            g.interp.push(foot * 2.0 - p);
+            g.wall_vel.push(V2::zeros());
+            g.wall_acc.push(V2::zeros());
+            g.volume.push(ds * ds);
+        }
+        k += 1;
+    }
+    g
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tank_ghosts_lie_on_the_fluid_lattice_and_mirror_into_the_fluid() {
+        let dx = 0.1;
+        let pts = vec![V2::new(0.0, 1.0), V2::new(0.0, 0.0), V2::new(2.0, 0.0), V2::new(2.0, 1.0)];
+        let g = ghost_layers(&pts, FluidSide::Left, dx, 0.399);
+        // 4 layers; every ghost sits at ((i + ½) dx, (j + ½) dx), outside the tank, within the support.
+        for (p, q) in g.pos.iter().zip(&g.interp) {
+            let fx = p.x / dx - 0.5;
+            let fy = p.y / dx - 0.5;
+            assert!((fx - fx.round()).abs() < 1e-9 && (fy - fy.round()).abs() < 1e-9, "{p:?} off lattice");
+            assert!(p.x < 0.0 || p.x > 2.0 || p.y < 0.0, "{p:?} inside the fluid");
+            assert!(q.x > 0.0 && q.x < 2.0 && q.y > 0.0, "mirror {q:?} not in the fluid");
+        }
+        // No duplicates.
+        for i in 0..g.pos.len() {
+            for j in i + 1..g.pos.len() {
+                assert!((g.pos[i] - g.pos[j]).norm() > 1e-9, "duplicate ghost {:?}", g.pos[i]);
+            }
+        }
+        // Corner block: the 4×4 ghosts below-left of the origin mirror through the vertex (central symmetry).
+        let corner: Vec<_> = g.pos.iter().zip(&g.interp).filter(|(p, _)| p.x < 0.0 && p.y < 0.0).collect();
+        assert_eq!(corner.len(), 16);
+        for (p, q) in corner {
+            assert!((p + q).norm() < 1e-12);
+        }
+        // Count: bottom 4 layers × 20 + two sides × 4 layers × 10 + two corners × 16.
+        assert_eq!(g.pos.len(), 4 * 20 + 2 * 4 * 10 + 2 * 16);
+    }
+}

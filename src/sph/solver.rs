@@ -1,0 +1,517 @@
+//! The δ-SPH solver: one time step reads as the method's sequence of stages.
+//!
+//! For every right-hand-side evaluation at (t, r, u, ρ):
+//! 1. place the ghost particles of every boundary at time t (moving walls are regenerated),
+//! 2. build the cell list over fluid and ghosts,
+//! 3. mirror the fluid onto the ghosts (MLS at the interpolation points, free slip, Neumann pressure),
+//! 4. compute the renormalised density gradients ⟨∇ρ⟩^L (δ-SPH only),
+//! 5. gather the continuity and momentum equations (5.1) for every fluid particle.
+//!
+//! All loops are gathers over a particle's neighbours in a fixed order, run in parallel with rayon and
+//! writing only to the particle's own slot: results are bit-identical for any number of threads.
+
+use super::body_force::BodyForce;
+use super::boundary::{Boundary, GhostGeometry};
+use super::equations::{
+    continuity, density_diffusion::{self, DensityDiffusion}, ghost_conditions, pressure_force,
+    renormalization::RenormalizedGradient, timestep, viscosity::{self, Viscosity}, wall_force,
+};
+use super::eos::Eos;
+use super::integrator::Integrator;
+use super::kernel::{Kernel, KernelKind};
+use super::mls::mls_weights;
+use super::neighbours::CellList;
+use super::particles::Fluid;
+use nalgebra::SVector;
+use rayon::prelude::*;
+
+/// Numerical and physical parameters of a run.
+#[derive(Clone, Debug)]
+pub struct SolverConfig<const D: usize> {
+    pub kernel: KernelKind,
+    /// Initial particle spacing dx (m).
+    pub dx: f64,
+    /// Smoothing length h (m); default 1.33 dx for the Gaussian.
+    pub h: f64,
+    pub eos: Eos,
+    pub viscosity: Viscosity,
+    pub diffusion: DensityDiffusion,
+    /// δ of eq. (5.1), dimensionless; default 0.1 (thesis §5.1; stable range 0 < δ < 0.2).
+    pub delta: f64,
+    pub integrator: Integrator,
+    pub cfl: f64,
+    pub body_force: BodyForce<D>,
+    /// Particles leaving this box stop the run (a blow-up); `None` for no check.
+    pub domain: Option<(SVector<f64, D>, SVector<f64, D>)>,
+    /// A time step below this (s) stops the run; default 1e-3 of the initial acoustic step h/c0.
+    pub dt_floor: f64,
+}
+
+impl<const D: usize> SolverConfig<D> {
+    /// Defaults of the thesis for spacing `dx`, density ρ0 and sound speed c0.
+    pub fn new(dx: f64, rho0: f64, c0: f64, body_force: BodyForce<D>) -> Self {
+        let kernel = KernelKind::RenormalizedGaussian;
+        let h = kernel.default_h_over_dx() * dx;
+        SolverConfig {
+            kernel,
+            dx,
+            h,
+            eos: Eos { kind: Default::default(), rho0, c0 },
+            viscosity: Viscosity::default(),
+            diffusion: DensityDiffusion::DeltaSph,
+            delta: 0.1,
+            integrator: Integrator::Rk4,
+            cfl: Integrator::Rk4.default_cfl(),
+            body_force,
+            domain: None,
+            dt_floor: 1e-3 * h / c0,
+        }
+    }
+}
+
+/// Values the solver assigns to the ghosts at each stage.
+#[derive(Clone, Debug, Default)]
+pub struct GhostState<const D: usize> {
+    pub geom: GhostGeometry<D>,
+    /// Index of the boundary each ghost belongs to.
+    pub owner: Vec<usize>,
+    pub vel: Vec<SVector<f64, D>>,
+    pub rho: Vec<f64>,
+    pub p: Vec<f64>,
+    pub grad_rho: Vec<SVector<f64, D>>,
+}
+
+/// Why a run stopped early.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BlowUpReason {
+    NotFinite,
+    LeftDomain,
+    TimeStepCollapse { dt: f64, floor: f64 },
+}
+
+/// A diagnosis of a blown-up run; the simulation keeps the last good state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BlowUp {
+    pub reason: BlowUpReason,
+    pub time: f64,
+    pub step: u64,
+    /// (particle id, its position) that triggered the stop, if one did.
+    pub particle: Option<(u32, Vec<f64>)>,
+}
+
+impl std::fmt::Display for BlowUp {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.reason {
+            BlowUpReason::NotFinite => write!(f, "non-finite position, velocity or density")?,
+            BlowUpReason::LeftDomain => write!(f, "a particle left the domain")?,
+            BlowUpReason::TimeStepCollapse { dt, floor } => {
+                write!(f, "time step collapsed to {dt:.3e} s (floor {floor:.3e} s): velocities or accelerations exploded")?
+            }
+        }
+        write!(f, " at t = {:.6} s, step {}", self.time, self.step)?;
+        if let Some((id, p)) = &self.particle {
+            write!(f, " (particle {id} at {p:?})")?;
+        }
+        write!(f, "; the state before that step is kept. Try a smaller CFL, a larger α or δ, or check the case set-up")
+    }
+}
+
+impl std::error::Error for BlowUp {}
+
+/// Rates of change of one evaluation.
+#[derive(Clone, Debug, Default)]
+struct Rates<const D: usize> {
+    drho: Vec<f64>,
+    dvel: Vec<SVector<f64, D>>,
+    max_signal: f64,
+    max_accel: f64,
+}
+
+/// Per-step record.
+#[derive(Clone, Copy, Debug)]
+pub struct StepReport {
+    pub dt: f64,
+    pub time: f64,
+}
+
+/// A running simulation.
+pub struct Simulation<const D: usize> {
+    pub cfg: SolverConfig<D>,
+    pub kernel: Kernel<D>,
+    pub fluid: Fluid<D>,
+    pub boundaries: Vec<Box<dyn Boundary<D>>>,
+    pub ghosts: GhostState<D>,
+    pub time: f64,
+    pub steps: u64,
+    pub last_dt: f64,
+    cells: CellList<D>,
+    all_pos: Vec<SVector<f64, D>>,
+    pressure: Vec<f64>,
+    grad_rho: Vec<SVector<f64, D>>,
+    ghosts_static: bool,
+}
+
+impl<const D: usize> Simulation<D> {
+    pub fn new(cfg: SolverConfig<D>, fluid: Fluid<D>, boundaries: Vec<Box<dyn Boundary<D>>>) -> Self {
+        let kernel = Kernel::new(cfg.kernel, cfg.h);
+        let mut sim = Simulation {
+            cfg,
+            kernel,
+            fluid,
+            boundaries,
+            ghosts: GhostState::default(),
+            time: 0.0,
+            steps: 0,
+            last_dt: 0.0,
+            cells: CellList::default(),
+            all_pos: vec![],
+            pressure: vec![],
+            grad_rho: vec![],
+            ghosts_static: false,
+        };
+        sim.place_ghosts(0.0);
+        sim.ghosts_static = !sim.boundaries.iter().any(|b| b.moves());
+        sim
+    }
+
+    /// Number of fluid particles.
+    pub fn n_fluid(&self) -> usize {
+        self.fluid.len()
+    }
+
+    fn place_ghosts(&mut self, t: f64) {
+        let g = &mut self.ghosts;
+        g.geom.clear();
+        g.owner.clear();
+        let mut tmp = GhostGeometry::default();
+        for (k, b) in self.boundaries.iter().enumerate() {
+            tmp.clear();
+            b.ghosts(t, &mut tmp);
+            g.owner.extend(std::iter::repeat(k).take(tmp.len()));
+            g.geom.append(&tmp);
+        }
+    }
+
+    /// Pressure of the fluid particles at the last evaluation (Pa).
+    pub fn pressure(&self) -> &[f64] {
+        &self.pressure
+    }
+
+    /// Stages 1–3 at (t, pos, vel, rho): ghosts, cell list, mirroring. Leaves `pressure` filled.
+    fn prepare(&mut self, t: f64, pos: &[SVector<f64, D>], vel: &[SVector<f64, D>], rho: &[f64]) {
+        if !self.ghosts_static {
+            self.place_ghosts(t);
+        }
+        let nf = pos.len();
+        self.all_pos.clear();
+        self.all_pos.extend_from_slice(pos);
+        self.all_pos.extend_from_slice(&self.ghosts.geom.pos);
+        self.cells = CellList::build(&self.all_pos, self.kernel.support);
+        let eos = self.cfg.eos;
+        self.pressure = rho.par_iter().map(|&r| eos.pressure(r)).collect();
+
+        // Stage 3: mirror the fluid onto the ghosts.
+        let kernel = self.kernel;
+        let cells = &self.cells;
+        let all_pos = &self.all_pos;
+        let pressure = &self.pressure;
+        let mass = &self.fluid.mass;
+        let body = self.cfg.body_force;
+        let geom = &self.ghosts.geom;
+        let values: Vec<(SVector<f64, D>, f64, f64, SVector<f64, D>)> = (0..geom.len())
+            .into_par_iter()
+            .map(|g| {
+                let xi = geom.interp[g];
+                let mut nb = Vec::with_capacity(64);
+                cells.for_each_within(all_pos, &xi, kernel.support, |j, rij, r| {
+                    if j < nf {
+                        nb.push((j, rij, kernel.w(r) * mass[j] / rho[j]));
+                    }
+                });
+                let wall_vel = geom.wall_vel[g];
+                if nb.is_empty() {
+                    return (wall_vel, eos.rho0, 0.0, SVector::zeros());
+                }
+                let w = mls_weights(kernel.h, &nb);
+                let p_i = w.interpolate(|j| pressure[j]);
+                let rho_i = w.interpolate(|j| rho[j]);
+                let u_i = w.interpolate_vec(|j| vel[j]);
+                let grad_i = w.gradient_of(|j| rho[j]);
+                let r_gi = geom.pos[g] - xi;
+                let dist = r_gi.norm();
+                let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
+                let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
+                let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
+                let u_g = ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n);
+                let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
+                let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
+                (u_g, eos.density(p_g), p_g, grad_g)
+            })
+            .collect();
+        let gs = &mut self.ghosts;
+        gs.vel = values.iter().map(|v| v.0).collect();
+        gs.rho = values.iter().map(|v| v.1).collect();
+        gs.p = values.iter().map(|v| v.2).collect();
+        gs.grad_rho = values.iter().map(|v| v.3).collect();
+    }
+
+    /// Stages 4–5: the rates of change of ρ and u.
+    fn rates(&mut self, t: f64, pos: &[SVector<f64, D>], vel: &[SVector<f64, D>], rho: &[f64]) -> Rates<D> {
+        self.prepare(t, pos, vel, rho);
+        let nf = pos.len();
+        let kernel = self.kernel;
+        let cells = &self.cells;
+        let all_pos = &self.all_pos;
+        let mass = &self.fluid.mass;
+        let gs = &self.ghosts;
+        let cfg = &self.cfg;
+        let h = kernel.h;
+
+        // Stage 4: renormalised density gradient, eqs. (4.19)–(4.20).
+        if cfg.diffusion.needs_gradient() {
+            self.grad_rho = (0..nf)
+                .into_par_iter()
+                .map(|i| {
+                    let mut acc = RenormalizedGradient::<D>::default();
+                    cells.for_each_within(all_pos, &pos[i], kernel.support, |j, rij, r| {
+                        if j == i {
+                            return;
+                        }
+                        let gw = kernel.grad(&rij, r);
+                        let (rho_j, v_j) = if j < nf {
+                            (rho[j], mass[j] / rho[j])
+                        } else {
+                            (gs.rho[j - nf], gs.geom.volume[j - nf])
+                        };
+                        acc.add(&gw, &rij, rho_j - rho[i], v_j);
+                    });
+                    acc.gradient()
+                })
+                .collect();
+        } else {
+            self.grad_rho = vec![SVector::zeros(); nf];
+        }
+        let grad_rho = &self.grad_rho;
+        let pressure = &self.pressure;
+        let eos = cfg.eos;
+        let visc = cfg.viscosity.coefficient(D, eos.rho0, h, eos.c0);
+        let diff = cfg.delta * eos.c0 * h;
+        let kind = cfg.diffusion;
+        let body = cfg.body_force;
+
+        // Stage 5: continuity and momentum, eq. (5.1).
+        let out: Vec<(f64, SVector<f64, D>, f64)> = (0..nf)
+            .into_par_iter()
+            .map(|i| {
+                let (rho_i, u_i, p_i) = (rho[i], vel[i], pressure[i]);
+                let mut drho = 0.0;
+                let mut dvel = SVector::<f64, D>::zeros();
+                let mut max_pi = 0.0f64;
+                cells.for_each_within(all_pos, &pos[i], kernel.support, |j, rij, r| {
+                    if j == i {
+                        return;
+                    }
+                    let gw = kernel.grad(&rij, r);
+                    let (u_j, rho_j, p_j, v_j, grad_j) = if j < nf {
+                        (vel[j], rho[j], pressure[j], mass[j] / rho[j], grad_rho[j])
+                    } else {
+                        let g = j - nf;
+                        (gs.vel[g], gs.rho[g], gs.p[g], gs.geom.volume[g], gs.grad_rho[g])
+                    };
+                    let u_ji = u_j - u_i;
+                    let r2 = r * r;
+                    drho += continuity::velocity_divergence(rho_i, &u_ji, &gw, v_j);
+                    if kind != DensityDiffusion::None {
+                        let psi = density_diffusion::psi(kind, rho_i, rho_j, &rij, r2, &grad_rho[i], &grad_j);
+                        drho += diff * psi.dot(&gw) * v_j;
+                    }
+                    dvel += pressure_force::pressure_acceleration(p_i, p_j, rho_i, &gw, v_j);
+                    let pi = viscosity::pi_ij(&u_ji, &rij, r2, h);
+                    dvel += viscosity::viscous_acceleration(visc, rho_i, pi, &gw, v_j);
+                    max_pi = max_pi.max(pi.abs());
+                });
+                dvel += body.acceleration(&pos[i]);
+                let signal = timestep::signal_speed(eos.sound_speed(rho_i), u_i.norm(), h, max_pi);
+                (drho, dvel, signal)
+            })
+            .collect();
+        let mut rates = Rates { drho: Vec::with_capacity(nf), dvel: Vec::with_capacity(nf), max_signal: 0.0, max_accel: 0.0 };
+        for (dr, dv, s) in out {
+            rates.max_signal = rates.max_signal.max(s);
+            rates.max_accel = rates.max_accel.max(dv.norm());
+            rates.drho.push(dr);
+            rates.dvel.push(dv);
+        }
+        rates
+    }
+
+    /// Re-orders the fluid particles by cell for memory locality (counting sort).
+    fn reorder(&mut self) {
+        let list = CellList::build(&self.fluid.pos, self.kernel.support);
+        let order = list.order().to_vec();
+        self.fluid.permute(&order);
+    }
+
+    /// Advances one time step. On a blow-up the state before the step is kept and a diagnosis returned.
+    pub fn step(&mut self) -> Result<StepReport, BlowUp> {
+        self.reorder();
+        let t0 = self.time;
+        let pos0 = self.fluid.pos.clone();
+        let vel0 = self.fluid.vel.clone();
+        let rho0 = self.fluid.rho.clone();
+        let k1 = self.rates(t0, &pos0, &vel0, &rho0);
+        let dt = timestep::time_step(self.cfg.cfl, self.kernel.h, k1.max_signal, k1.max_accel);
+        if !dt.is_finite() || dt < self.cfg.dt_floor {
+            return Err(self.blow_up(BlowUpReason::TimeStepCollapse { dt, floor: self.cfg.dt_floor }, None));
+        }
+        let axpy = |a: f64, vel_rate: &[SVector<f64, D>], k: &Rates<D>| {
+            let pos: Vec<_> = pos0.iter().zip(vel_rate).map(|(p, v)| p + v * a).collect();
+            let vel: Vec<_> = vel0.iter().zip(&k.dvel).map(|(u, du)| u + du * a).collect();
+            let rho: Vec<_> = rho0.iter().zip(&k.drho).map(|(r, dr)| r + dr * a).collect();
+            (pos, vel, rho)
+        };
+        let (pos, vel, rho) = match self.cfg.integrator {
+            Integrator::Rk4 => {
+                let (p2, v2, r2) = axpy(0.5 * dt, &vel0, &k1);
+                let k2 = self.rates(t0 + 0.5 * dt, &p2, &v2, &r2);
+                let (p3, v3, r3) = axpy(0.5 * dt, &v2, &k2);
+                let k3 = self.rates(t0 + 0.5 * dt, &p3, &v3, &r3);
+                let (p4, v4, r4) = axpy(dt, &v3, &k3);
+                let k4 = self.rates(t0 + dt, &p4, &v4, &r4);
+                let w = dt / 6.0;
+                let n = pos0.len();
+                let mut pos = Vec::with_capacity(n);
+                let mut vel = Vec::with_capacity(n);
+                let mut rho = Vec::with_capacity(n);
+                for i in 0..n {
+                    pos.push(pos0[i] + (vel0[i] + v2[i] * 2.0 + v3[i] * 2.0 + v4[i]) * w);
+                    vel.push(vel0[i] + (k1.dvel[i] + k2.dvel[i] * 2.0 + k3.dvel[i] * 2.0 + k4.dvel[i]) * w);
+                    rho.push(rho0[i] + (k1.drho[i] + 2.0 * k2.drho[i] + 2.0 * k3.drho[i] + k4.drho[i]) * w);
+                }
+                (pos, vel, rho)
+            }
+            Integrator::PredictorCorrector => {
+                let (p2, v2, r2) = axpy(dt, &vel0, &k1);
+                let k2 = self.rates(t0 + dt, &p2, &v2, &r2);
+                let w = 0.5 * dt;
+                let n = pos0.len();
+                let mut pos = Vec::with_capacity(n);
+                let mut vel = Vec::with_capacity(n);
+                let mut rho = Vec::with_capacity(n);
+                for i in 0..n {
+                    pos.push(pos0[i] + (vel0[i] + v2[i]) * w);
+                    vel.push(vel0[i] + (k1.dvel[i] + k2.dvel[i]) * w);
+                    rho.push(rho0[i] + (k1.drho[i] + k2.drho[i]) * w);
+                }
+                (pos, vel, rho)
+            }
+        };
+        // Checks before accepting the step.
+        for i in 0..pos.len() {
+            let finite = rho[i].is_finite() && pos[i].iter().all(|x| x.is_finite()) && vel[i].iter().all(|x| x.is_finite());
+            if !finite {
+                return Err(self.blow_up(BlowUpReason::NotFinite, Some(i)));
+            }
+        }
+        if let Some((lo, hi)) = self.cfg.domain {
+            for (i, p) in pos.iter().enumerate() {
+                if (0..D).any(|d| p[d] < lo[d] || p[d] > hi[d]) {
+                    let mut bu = self.blow_up(BlowUpReason::LeftDomain, Some(i));
+                    bu.particle = Some((self.fluid.id[i], p.iter().copied().collect()));
+                    return Err(bu);
+                }
+            }
+        }
+        self.fluid.pos = pos;
+        self.fluid.vel = vel;
+        self.fluid.rho = rho;
+        self.time = t0 + dt;
+        self.steps += 1;
+        self.last_dt = dt;
+        Ok(StepReport { dt, time: self.time })
+    }
+
+    fn blow_up(&mut self, reason: BlowUpReason, particle: Option<usize>) -> BlowUp {
+        // Restore the consistent ghost/pressure state of the kept (pre-step) fluid state.
+        self.refresh();
+        BlowUp {
+            reason,
+            time: self.time,
+            step: self.steps,
+            particle: particle.map(|i| (self.fluid.id[i], self.fluid.pos[i].iter().copied().collect())),
+        }
+    }
+
+    /// Recomputes ghosts, cell list and pressures for the current state (before diagnostics and outputs).
+    pub fn refresh(&mut self) {
+        let pos = self.fluid.pos.clone();
+        let vel = self.fluid.vel.clone();
+        let rho = self.fluid.rho.clone();
+        self.prepare(self.time, &pos, &vel, &rho);
+    }
+
+    /// Force of the fluid on each boundary, eqs. (7.12)–(7.13) (N per unit depth in 2D). Call after
+    /// [`Simulation::refresh`]. A gather over ghosts; the per-boundary sums are sequential (deterministic).
+    pub fn boundary_forces(&self) -> Vec<SVector<f64, D>> {
+        let nf = self.fluid.len();
+        let kernel = self.kernel;
+        let gs = &self.ghosts;
+        let fl = &self.fluid;
+        let p = &self.pressure;
+        let visc = self.cfg.viscosity.coefficient(D, self.cfg.eos.rho0, kernel.h, self.cfg.eos.c0);
+        let per_ghost: Vec<SVector<f64, D>> = (0..gs.geom.len())
+            .into_par_iter()
+            .map(|g| {
+                let mut f = SVector::zeros();
+                let xg = gs.geom.pos[g];
+                self.cells.for_each_within(&self.all_pos, &xg, kernel.support, |j, rgj, r| {
+                    if j >= nf {
+                        return;
+                    }
+                    let rij = -rgj; // r_i − r_g with i the fluid particle
+                    let gw = kernel.grad(&rij, r);
+                    let u_ji = gs.vel[g] - fl.vel[j];
+                    let pi = viscosity::pi_ij(&u_ji, &rij, r * r, kernel.h);
+                    let v_i = fl.mass[j] / fl.rho[j];
+                    f += wall_force::pair_force(p[j], gs.p[g], visc * pi, &gw, v_i, gs.geom.volume[g]);
+                });
+                f
+            })
+            .collect();
+        let mut out = vec![SVector::zeros(); self.boundaries.len()];
+        for (g, f) in per_ghost.iter().enumerate() {
+            out[gs.owner[g]] += f;
+        }
+        out
+    }
+
+    /// Shepard average of the pressure at `x` over fluid and ghost particles (Pa); `None` if no particle
+    /// is within the kernel support. Call after [`Simulation::refresh`].
+    pub fn pressure_at(&self, x: &SVector<f64, D>) -> Option<f64> {
+        let nf = self.fluid.len();
+        let (mut s, mut w) = (0.0, 0.0);
+        self.cells.for_each_within(&self.all_pos, x, self.kernel.support, |j, _, r| {
+            let (p, v) = if j < nf {
+                (self.pressure[j], self.fluid.mass[j] / self.fluid.rho[j])
+            } else {
+                (self.ghosts.p[j - nf], self.ghosts.geom.volume[j - nf])
+            };
+            let wv = self.kernel.w(r) * v;
+            s += p * wv;
+            w += wv;
+        });
+        (w > 0.0).then(|| s / w)
+    }
+
+    /// Fluid particles within the kernel support of `x` (indices), via the cell list. Call after refresh.
+    pub fn fluid_neighbours_of(&self, x: &SVector<f64, D>) -> Vec<usize> {
+        let nf = self.fluid.len();
+        let mut v = vec![];
+        self.cells.for_each_within(&self.all_pos, x, self.kernel.support, |j, _, _| {
+            if j < nf {
+                v.push(j)
+            }
+        });
+        v
+    }
+}
