@@ -1,1 +1,332 @@
+//! Validation of the built-in cases against analytic solutions and published data: each check gives our
+//! value, the reference, the error and the tolerance it must meet. `bowwave validate` runs them at full
+//! resolution; the tests in `tests/` run the same checks at coarse resolution.
 
+use crate::cases::{self, run::{run, RunOptions, RunResult}, CaseFile};
+use crate::io::plot::{line_plot, Series, Style};
+use crate::reference::{self, interp, named};
+use std::path::Path;
+
+/// One validated quantity.
+#[derive(Clone, Debug)]
+pub struct Check {
+    pub case: String,
+    pub quantity: String,
+    pub value: f64,
+    pub reference: f64,
+    /// The error measure (defined per check in `quantity`).
+    pub error: f64,
+    /// `None`: reported only.
+    pub tolerance: Option<f64>,
+}
+
+impl Check {
+    pub fn pass(&self) -> bool {
+        self.error.is_finite() && self.tolerance.is_none_or(|t| self.error <= t)
+    }
+}
+
+fn check(r: &RunResult, quantity: &str, value: f64, reference: f64, error: f64, tolerance: Option<f64>) -> Check {
+    Check { case: format!("{} (res {:.0})", r.case.name, r.case.scales.length / r.dx), quantity: quantity.into(), value, reference, error, tolerance }
+}
+
+fn col(r: &RunResult, name: &str) -> Vec<f64> {
+    r.series.column(name).unwrap_or_else(|| panic!("series column `{name}` missing"))
+}
+
+/// Resolution used by `bowwave validate` (full) for each built-in case.
+pub fn full_resolution(case: &str) -> Option<f64> {
+    match case {
+        "hydrostatic" => Some(40.0),
+        "elliptic-drop" => Some(50.0),
+        "oscillating-drop" => Some(40.0),
+        "dam-break-mm" => Some(50.0),
+        "dam-break" => Some(80.0),
+        _ => None,
+    }
+}
+
+/// Hydrostatic tank: bottom pressure within 1 % of ρgH and E_K/(M g H) < 1e-5 at the end.
+pub fn hydrostatic(r: &RunResult) -> Vec<Check> {
+    let p = col(r, "pstar_bottom");
+    let ek = col(r, "e_kinetic");
+    let last = p.len() - 1;
+    let g = r.case.gravity_magnitude();
+    let mgh = r.sim.fluid.total_mass() * g * r.case.scales.length;
+    let fy = col(r, "fy_tank");
+    let weight = r.sim.fluid.total_mass() * g;
+    vec![
+        check(r, "bottom p/(rho g H) at end, |rel. error|", p[last], 1.0, (p[last] - 1.0).abs(), Some(0.01)),
+        check(r, "E_K/(M g H) at end", ek[last] / mgh, 0.0, ek[last] / mgh, Some(1e-5)),
+        check(r, "bottom force / weight at end, |rel. error| (7.12)", -fy[last] / weight, 1.0, (-fy[last] / weight - 1.0).abs(), None),
+    ]
+}
+
+/// Free elliptic drop: max |a − a_ref|/a_ref over t ≤ 0.008 s within 2 %.
+pub fn elliptic_drop(r: &RunResult) -> Vec<Check> {
+    let rt = reference::load("elliptic_drop");
+    let (tr, ar) = (named(&rt, "t_s"), named(&rt, "a_semi_axis_x_m"));
+    let (t, a) = (col(r, "t"), col(r, "semi_axis_x"));
+    let mut worst = (0.0, 0.0, 0.0);
+    for (ti, ai) in t.iter().zip(&a) {
+        if *ti > 0.008 + 1e-12 {
+            break;
+        }
+        if let Some(aref) = interp(&tr, &ar, *ti) {
+            let e = (ai - aref).abs() / aref;
+            if e >= worst.0 {
+                worst = (e, *ai, aref);
+            }
+        }
+    }
+    let a_end = interp(&t, &a, 0.008).unwrap_or(f64::NAN);
+    let aref_end = interp(&tr, &ar, 0.008).unwrap_or(f64::NAN);
+    vec![
+        check(r, "semi-axis a(t), max rel. error for t <= 0.008 s", worst.1, worst.2, worst.0, Some(0.02)),
+        check(r, "semi-axis a at t = 0.008 s (m), rel. error", a_end, aref_end, (a_end - aref_end).abs() / aref_end, None),
+    ]
+}
+
+/// Oscillating drop: max |A − A_ref|/A_ref over two periods within 3 %; energy decay reported.
+pub fn oscillating_drop(r: &RunResult) -> Vec<Check> {
+    let rt = reference::load("oscillating_drop");
+    let (tr, ar) = (named(&rt, "t"), named(&rt, "A_semi_axis_x"));
+    let (t, a) = (col(r, "t"), col(r, "semi_axis_x"));
+    let period = 4.567375;
+    let mut worst = (0.0, 0.0, 0.0);
+    for (ti, ai) in t.iter().zip(&a) {
+        if *ti > 2.0 * period {
+            break;
+        }
+        if let Some(aref) = interp(&tr, &ar, *ti) {
+            let e = (ai - aref).abs() / aref;
+            if e >= worst.0 {
+                worst = (e, *ai, aref);
+            }
+        }
+    }
+    let de = col(r, "de_mechanical_rel");
+    let e_end = *de.last().unwrap();
+    vec![
+        check(r, "semi-axis A(t), max rel. error over two periods", worst.1, worst.2, worst.0, Some(0.03)),
+        check(r, "mechanical energy change over the run / initial (E_K + E_C)", e_end, 0.0, e_end.abs(), None),
+    ]
+}
+
+/// Martin–Moyce surge front (n² = 2): |x − x_exp|/x_exp ≤ 10 % at every T ≤ 2.5, T = √2 t √(g/a).
+pub fn martin_moyce(r: &RunResult) -> Vec<Check> {
+    let rt = reference::load("martin_moyce_front");
+    let (tt, zz) = (reference::col(&rt, 0), reference::col(&rt, 1));
+    let (ts, fs) = (col(r, "t_star"), col(r, "front_star"));
+    let big_t: Vec<f64> = ts.iter().map(|t| t * 2f64.sqrt()).collect();
+    let mut worst = (0.0, 0.0, 0.0);
+    let mut sum = 0.0;
+    let mut n = 0;
+    for (t_exp, z_exp) in tt.iter().zip(&zz) {
+        if *t_exp > 2.5 {
+            continue;
+        }
+        let z = interp(&big_t, &fs, *t_exp).unwrap_or(f64::NAN);
+        let e = (z - z_exp).abs() / z_exp;
+        sum += e;
+        n += 1;
+        if !(e < worst.0) {
+            worst = (e, z, *z_exp);
+        }
+    }
+    vec![
+        check(r, "front x/a, max rel. error at experimental T <= 2.5", worst.1, worst.2, worst.0, Some(0.10)),
+        check(r, "front x/a, mean rel. error at experimental T <= 2.5", f64::NAN, f64::NAN, sum / n.max(1) as f64, None),
+    ]
+}
+
+/// The Marrone et al. (2011) column closest to resolution `res` (40, 80 or 320).
+fn marrone_column(res: f64) -> (usize, &'static str) {
+    let choices = [(40usize, "p_over_rho_g_H_deltaSPH_H_over_dx_40"), (80, "p_over_rho_g_H_deltaSPH_H_over_dx_80"), (320, "p_over_rho_g_H_deltaSPH_H_over_dx_320")];
+    *choices.iter().min_by(|a, b| ((a.0 as f64).ln() - res.ln()).abs().total_cmp(&((b.0 as f64).ln() - res.ln()).abs())).unwrap()
+}
+
+/// First time a pressure signal exceeds `level` (linear interpolation); NaN if never.
+pub fn first_rise(t: &[f64], p: &[f64], level: f64) -> f64 {
+    for k in 1..t.len() {
+        if p[k] >= level && p[k - 1] < level {
+            return t[k - 1] + (level - p[k - 1]) / (p[k] - p[k - 1]) * (t[k] - t[k - 1]);
+        }
+    }
+    f64::NAN
+}
+
+/// Pressure level (p/(ρgH)) that defines the first impact at P1.
+pub const IMPACT_LEVEL: f64 = 0.1;
+
+/// Dam break: first-impact time at P1 within 0.1 t√(g/H) of Marrone et al. at the same resolution; mean
+/// |p − p_ref|/(ρgH) over t√(g/H) ∈ [2, 7] at P1 and P2 against Marrone and Buchner (reported).
+pub fn dam_break(r: &RunResult) -> Vec<Check> {
+    let res = r.case.scales.length / r.dx;
+    let (nres, colname) = marrone_column(res);
+    let ts = col(r, "t_star");
+    let mut out = vec![];
+    for (probe, mref, bref) in [("P1", "marrone_p1", "buchner_p1"), ("P2", "marrone_p2", "buchner_p2")] {
+        let p = col(r, &format!("pstar_{probe}"));
+        let m = reference::load(mref);
+        let (tm, pm) = (reference::col(&m, 0), named(&m, colname));
+        let b = reference::load(bref);
+        let (tb, pb) = (reference::col(&b, 0), reference::col(&b, 1));
+        if probe == "P1" {
+            let ours = first_rise(&ts, &p, IMPACT_LEVEL);
+            let theirs = first_rise(&tm, &pm, IMPACT_LEVEL);
+            out.push(check(r, &format!("P1 first impact t*(p* >= {IMPACT_LEVEL}) vs Marrone H/dx={nres}, |diff|"), ours, theirs, (ours - theirs).abs(), Some(0.1)));
+        }
+        for (label, tr, pr) in [(format!("Marrone H/dx={nres}"), &tm, &pm), ("Buchner exp.".to_string(), &tb, &pb)] {
+            let (mut s, mut n) = (0.0, 0);
+            for (t, pv) in ts.iter().zip(&p) {
+                if (2.0..=7.0).contains(t) {
+                    if let Some(q) = interp(tr, pr, *t) {
+                        s += (pv - q).abs();
+                        n += 1;
+                    }
+                }
+            }
+            out.push(check(r, &format!("{probe} mean |p-p_ref|/(rho g H), t* in [2,7], vs {label}"), f64::NAN, f64::NAN, s / n.max(1) as f64, None));
+        }
+    }
+    out
+}
+
+/// The checks of a built-in case, if it has any.
+pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
+    Some(match r.case.name.as_str() {
+        "hydrostatic" => hydrostatic(r),
+        "elliptic-drop" => elliptic_drop(r),
+        "oscillating-drop" => oscillating_drop(r),
+        "dam-break-mm" => martin_moyce(r),
+        "dam-break" => dam_break(r),
+        _ => return None,
+    })
+}
+
+/// Prints a table of checks.
+pub fn print_checks(checks: &[Check]) {
+    println!("{:<26} {:<72} {:>11} {:>11} {:>10} {:>9}  result", "case", "quantity", "ours", "reference", "error", "tol.");
+    for c in checks {
+        let tol = c.tolerance.map(|t| format!("{t:.3}")).unwrap_or_else(|| "-".into());
+        let res = match (c.tolerance, c.pass()) {
+            (None, _) => "report",
+            (Some(_), true) => "PASS",
+            (Some(_), false) => "FAIL",
+        };
+        println!("{:<26} {:<72} {:>11.5} {:>11.5} {:>10.4e} {:>9}  {res}", c.case, c.quantity, c.value, c.reference, c.error, tol);
+    }
+}
+
+/// Plots of a run: energies, and per case its probes or semi-axes against the references.
+pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf>> {
+    let mut files = vec![];
+    let ts = col(r, "t_star");
+    let xy = |a: &[f64], b: &[f64]| a.iter().copied().zip(b.iter().copied()).collect::<Vec<_>>();
+    let p = dir.join(format!("{}_energy.png", r.case.name));
+    line_plot(&p, &format!("{}: mechanical energy change", r.case.name), "t*", "(E_M - E_M0) / scale", &[Series { name: "dE_M".into(), points: xy(&ts, &col(r, "de_mechanical_rel")), style: Style::Line }])?;
+    files.push(p);
+    match r.case.name.as_str() {
+        "dam-break" => {
+            let res = r.case.scales.length / r.dx;
+            for (probe, mref, bref) in [("P1", "marrone_p1", "buchner_p1"), ("P2", "marrone_p2", "buchner_p2")] {
+                let m = reference::load(mref);
+                let b = reference::load(bref);
+                let mut series = vec![Series { name: format!("bowwave H/dx={res:.0}"), points: xy(&ts, &col(r, &format!("pstar_{probe}"))), style: Style::Line }];
+                for n in [40, 80, 320] {
+                    let c = format!("p_over_rho_g_H_deltaSPH_H_over_dx_{n}");
+                    series.push(Series { name: format!("Marrone 2011 H/dx={n}"), points: xy(&reference::col(&m, 0), &named(&m, &c)), style: Style::Line });
+                }
+                series.push(Series { name: "Buchner 2002 exp.".into(), points: xy(&reference::col(&b, 0), &reference::col(&b, 1)), style: Style::Markers });
+                let p = dir.join(format!("dam-break_{probe}.png"));
+                line_plot(&p, &format!("Dam break: pressure at {probe}"), "t sqrt(g/H)", "p / (rho g H)", &series)?;
+                files.push(p);
+            }
+        }
+        "dam-break-mm" => {
+            let rt = reference::load("martin_moyce_front");
+            let big_t: Vec<f64> = ts.iter().map(|t| t * 2f64.sqrt()).collect();
+            let p = dir.join("dam-break-mm_front.png");
+            line_plot(&p, "Martin-Moyce surge front (n^2 = 2)", "T = n t sqrt(g/a)", "x / a", &[
+                Series { name: "bowwave".into(), points: xy(&big_t, &col(r, "front_star")), style: Style::Line },
+                Series { name: "Martin & Moyce 1952, Table 2".into(), points: xy(&reference::col(&rt, 0), &reference::col(&rt, 1)), style: Style::Markers },
+            ])?;
+            files.push(p);
+        }
+        "elliptic-drop" | "oscillating-drop" => {
+            let (file, tc, ac) = if r.case.name == "elliptic-drop" { ("elliptic_drop", "t_s", "a_semi_axis_x_m") } else { ("oscillating_drop", "t", "A_semi_axis_x") };
+            let rt = reference::load(file);
+            let p = dir.join(format!("{}_semi_axis.png", r.case.name));
+            line_plot(&p, &format!("{}: semi-axis along x", r.case.name), "t (s)", "a (m)", &[
+                Series { name: "bowwave (2 sqrt<x^2>)".into(), points: xy(&col(r, "t"), &col(r, "semi_axis_x")), style: Style::Line },
+                Series { name: "ODE solution".into(), points: xy(&named(&rt, tc), &named(&rt, ac)), style: Style::Line },
+            ])?;
+            files.push(p);
+        }
+        "hydrostatic" => {
+            let p = dir.join("hydrostatic_bottom_pressure.png");
+            line_plot(&p, "Hydrostatic tank: bottom pressure", "t sqrt(g/H)", "p / (rho g H)", &[Series { name: "bottom probe".into(), points: xy(&ts, &col(r, "pstar_bottom")), style: Style::Line }])?;
+            files.push(p);
+        }
+        _ => {}
+    }
+    Ok(files)
+}
+
+/// `bowwave run`: runs a case with progress and outputs, prints where they went and the case's checks.
+/// Returns the process exit code (2 after a blow-up).
+pub fn run_and_report(case: &CaseFile, res: Option<f64>, end: Option<f64>, out: &Path, vtk: bool, progress: bool) -> anyhow::Result<i32> {
+    let opts = RunOptions { res, end_time: end, out_dir: Some(out.to_path_buf()), progress, vtk };
+    let r = run(case, &opts)?;
+    let mut files = r.files.clone();
+    files.extend(plots(&r, out)?);
+    println!(
+        "{}: {} fluid particles, dx = {:.4e} m, {} steps in {:.1} s wall ({:.3e} particle-steps/s)",
+        case.name, r.n_fluid, r.dx, r.steps, r.wall_seconds, r.particle_steps_per_second()
+    );
+    if let Some(c) = checks(&r) {
+        if r.blowup.is_none() && end.is_none() {
+            print_checks(&c);
+        }
+    }
+    println!("outputs:");
+    for f in &files {
+        println!("  {}", f.display());
+    }
+    if let Some(b) = &r.blowup {
+        eprintln!("error: the run blew up: {b}");
+        return Ok(2);
+    }
+    Ok(0)
+}
+
+/// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
+pub fn validate_cli(case: Option<&str>, res: Option<f64>, out: Option<&Path>) -> anyhow::Result<bool> {
+    let names: Vec<&str> = match case {
+        Some(n) => vec![n],
+        None => cases::builtin::builtin_names(),
+    };
+    let mut all = vec![];
+    let mut ok = true;
+    for n in names {
+        let c = cases::load(n)?;
+        let res = res.or(full_resolution(n));
+        eprintln!("validating {n} at resolution {:.0} ...", res.unwrap_or(c.scales.resolution));
+        let r = run(&c, &RunOptions { res, progress: true, ..Default::default() })?;
+        if let Some(b) = &r.blowup {
+            eprintln!("{n}: blew up: {b}");
+            ok = false;
+            continue;
+        }
+        if let Some(dir) = out {
+            r.series.write(&dir.join(format!("{n}_series.csv")))?;
+            plots(&r, dir)?;
+        }
+        let c = checks(&r).unwrap_or_default();
+        ok &= c.iter().all(|c| c.pass());
+        all.extend(c);
+    }
+    print_checks(&all);
+    Ok(ok)
+}

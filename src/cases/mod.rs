@@ -1,1 +1,25 @@
+//! Cases: the TOML description of a run, the built-in cases, their set-up as a simulation, and the driver
+//! that runs one and writes its outputs.
 
+pub mod builtin;
+pub mod case_file;
+pub mod run;
+pub mod setup;
+
+pub use case_file::{CaseError, CaseFile};
+
+/// Loads a case by built-in name or from a TOML file path.
+pub fn load(name_or_path: &str) -> Result<CaseFile, CaseError> {
+    if let Some(text) = builtin::builtin_text(name_or_path) {
+        return CaseFile::parse(text, &format!("built-in case `{name_or_path}`"));
+    }
+    let path = std::path::Path::new(name_or_path);
+    if !path.exists() {
+        return Err(CaseError::Field {
+            file: name_or_path.to_string(),
+            field: "CASE".into(),
+            expected: format!("a built-in case ({}) or an existing .toml file", builtin::builtin_names().join(", ")),
+        });
+    }
+    CaseFile::read(path)
+}

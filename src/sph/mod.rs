@@ -13,3 +13,5 @@ pub mod neighbours;
 pub mod particles;
 pub mod polyline_wall;
 pub mod solver;
+
+pub use equations::{density_diffusion, viscosity};

@@ -1,0 +1,372 @@
+//! The case file: a TOML description of a 2D SPH run (walls, fluid blocks, body force, numerics, probes,
+//! outputs). Units are SI and given in the comments of the built-in cases (`cases/*.toml`).
+//! Every error names the file, the field and what was expected.
+
+use crate::sph::{
+    density_diffusion::DensityDiffusion, eos::EosKind, integrator::Integrator, kernel::KernelKind,
+    polyline_wall::FluidSide, viscosity::Viscosity,
+};
+use serde::{Deserialize, Serialize};
+
+/// An error in a case file.
+#[derive(Debug, thiserror::Error)]
+pub enum CaseError {
+    #[error("{file}: cannot read: {source}")]
+    Io { file: String, source: std::io::Error },
+    #[error("{file}: {message}")]
+    Syntax { file: String, message: String },
+    #[error("{file}: field `{field}`: expected {expected}")]
+    Field { file: String, field: String, expected: String },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CaseFile {
+    pub name: String,
+    #[serde(default)]
+    pub description: String,
+    /// Spatial dimension; only 2 is accepted by case files for now.
+    #[serde(default = "two")]
+    pub dimension: usize,
+    pub scales: Scales,
+    pub fluid: FluidSpec,
+    #[serde(default)]
+    pub numerics: Numerics,
+    pub body_force: BodyForceSpec,
+    pub domain: Domain,
+    #[serde(default)]
+    pub walls: Vec<WallSpec>,
+    pub blocks: Vec<BlockSpec>,
+    #[serde(default)]
+    pub probes: Probes,
+    pub output: Output,
+}
+
+fn two() -> usize {
+    2
+}
+
+/// Reference scales: `length` (m) sets the resolution (dx = length / resolution) and the non-dimensional
+/// outputs t* = t √(g/length), p* = p/(ρ0 g length), x* = x/length (g = |body force| or 1 without one).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scales {
+    pub length: f64,
+    /// Default length/dx (overridden by `--res`).
+    pub resolution: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FluidSpec {
+    /// ρ0 (kg/m³).
+    pub rho0: f64,
+    /// Speed of sound c0 (m/s); give this or `c0_over_sqrt_g_length`.
+    pub c0: Option<f64>,
+    /// c0 / √(g length) (dimensionless), e.g. 20 for the dam break.
+    pub c0_over_sqrt_g_length: Option<f64>,
+    #[serde(default)]
+    pub eos: EosKind,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Numerics {
+    #[serde(default = "default_kernel")]
+    pub kernel: KernelKind,
+    /// h/dx; default 1.33 (Gaussian) or 2.0 (Wendland).
+    pub h_over_dx: Option<f64>,
+    #[serde(default)]
+    pub integrator: Integrator,
+    /// CFL of eq. (4.22); default per integrator (1.5 RK4, 0.3 predictor–corrector).
+    pub cfl: Option<f64>,
+    #[serde(default)]
+    pub density_diffusion: DensityDiffusion,
+    /// δ (dimensionless), default 0.1.
+    #[serde(default = "default_delta")]
+    pub delta: f64,
+    #[serde(default)]
+    pub viscosity: Viscosity,
+}
+
+fn default_kernel() -> KernelKind {
+    KernelKind::RenormalizedGaussian
+}
+fn default_delta() -> f64 {
+    0.1
+}
+
+impl Default for Numerics {
+    fn default() -> Self {
+        Numerics {
+            kernel: default_kernel(),
+            h_over_dx: None,
+            integrator: Integrator::default(),
+            cfl: None,
+            density_diffusion: DensityDiffusion::default(),
+            delta: default_delta(),
+            viscosity: Viscosity::default(),
+        }
+    }
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum BodyForceSpec {
+    /// Uniform gravity g (m/s²).
+    Gravity { g: Vec<f64> },
+    /// Central force −Ω² (x − centre), Ω in 1/s.
+    Central { omega: f64, centre: Vec<f64> },
+    None,
+}
+
+/// Particles leaving [min, max] (m) stop the run as a blow-up.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Domain {
+    pub min: Vec<f64>,
+    pub max: Vec<f64>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WallSpec {
+    pub name: String,
+    /// Polyline vertices (m).
+    pub points: Vec<Vec<f64>>,
+    /// Side of the polyline (walking from first to last point) on which the fluid lies.
+    pub fluid_side: FluidSide,
+    /// Constant translation velocity (m/s); omitted: fixed.
+    pub velocity: Option<Vec<f64>>,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(tag = "shape", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum BlockSpec {
+    /// Particles on the lattice ((i + ½) dx) inside [min, max] (m).
+    Rectangle {
+        min: Vec<f64>,
+        max: Vec<f64>,
+        #[serde(default)]
+        pressure: PressureSpec,
+        #[serde(default)]
+        velocity: Option<Vec<f64>>,
+        #[serde(default)]
+        velocity_gradient: Option<Vec<Vec<f64>>>,
+    },
+    /// Particles on concentric rings of spacing dx inside a disc (m).
+    Disc {
+        centre: Vec<f64>,
+        radius: f64,
+        #[serde(default)]
+        pressure: PressureSpec,
+        #[serde(default)]
+        velocity: Option<Vec<f64>>,
+        /// Initial velocity u = G (x − centre), G in 1/s.
+        #[serde(default)]
+        velocity_gradient: Option<Vec<Vec<f64>>>,
+    },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, Default, PartialEq)]
+#[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
+pub enum PressureSpec {
+    /// p = 0.
+    #[default]
+    Zero,
+    /// Hydrostatic with the free surface at the block's top (gravity along −y).
+    Hydrostatic,
+    /// p = p_centre (1 − |x − c|²/R²) (Pa): the initial pressure of the drops.
+    Paraboloid { p_centre: f64 },
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct Probes {
+    #[serde(default)]
+    pub pressure: Vec<PressureProbe>,
+    #[serde(default)]
+    pub gauge: Vec<Gauge>,
+    /// Record the front (largest x of the fluid).
+    #[serde(default)]
+    pub front: bool,
+}
+
+/// A pressure sensor on a wall: the average of the pressure over a segment of length `size` (m) centred at
+/// `position` (m) along the unit `direction` (the wall tangent), sampled at 5 points.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PressureProbe {
+    pub name: String,
+    pub position: Vec<f64>,
+    pub direction: Vec<f64>,
+    #[serde(default)]
+    pub size: f64,
+}
+
+/// A wave gauge: free-surface elevation at abscissa `x` (m).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Gauge {
+    pub name: String,
+    pub x: f64,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Output {
+    /// End time (s).
+    pub end_time: f64,
+    /// Time-series sampling interval (s).
+    pub series_every: f64,
+    /// VTK snapshot interval (s); 0 turns snapshots off.
+    #[serde(default)]
+    pub vtk_every: f64,
+}
+
+impl CaseFile {
+    /// Parses and checks a case from TOML text; `file` names it in errors.
+    pub fn parse(text: &str, file: &str) -> Result<Self, CaseError> {
+        let case: CaseFile = toml::from_str(text).map_err(|e| CaseError::Syntax { file: file.to_string(), message: e.to_string() })?;
+        case.check(file)?;
+        Ok(case)
+    }
+
+    /// Reads a case file from disk.
+    pub fn read(path: &std::path::Path) -> Result<Self, CaseError> {
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|source| CaseError::Io { file: file.clone(), source })?;
+        Self::parse(&text, &file)
+    }
+
+    fn check(&self, file: &str) -> Result<(), CaseError> {
+        let err = |field: &str, expected: &str| CaseError::Field { file: file.into(), field: field.into(), expected: expected.into() };
+        let d = self.dimension;
+        if d != 2 {
+            return Err(err("dimension", "2 (case files describe 2D runs; 3D comes with the comparison mode)"));
+        }
+        let pos = |x: f64| x.is_finite() && x > 0.0;
+        let vec_ok = |v: &Vec<f64>| v.len() == d && v.iter().all(|x| x.is_finite());
+        if !pos(self.scales.length) {
+            return Err(err("scales.length", "a positive length in metres"));
+        }
+        if !pos(self.scales.resolution) {
+            return Err(err("scales.resolution", "a positive number of particles per reference length"));
+        }
+        if !pos(self.fluid.rho0) {
+            return Err(err("fluid.rho0", "a positive density in kg/m³"));
+        }
+        match (self.fluid.c0, self.fluid.c0_over_sqrt_g_length) {
+            (Some(c), None) | (None, Some(c)) if pos(c) => {}
+            (Some(_), Some(_)) => return Err(err("fluid.c0", "either `c0` or `c0_over_sqrt_g_length`, not both")),
+            _ => return Err(err("fluid.c0", "a positive speed of sound: `c0` (m/s) or `c0_over_sqrt_g_length`")),
+        }
+        if let Some(r) = self.numerics.h_over_dx {
+            if !(r.is_finite() && (0.5..=4.0).contains(&r)) {
+                return Err(err("numerics.h_over_dx", "a ratio between 0.5 and 4"));
+            }
+        }
+        if let Some(c) = self.numerics.cfl {
+            if !pos(c) {
+                return Err(err("numerics.cfl", "a positive CFL number"));
+            }
+        }
+        if !(self.numerics.delta.is_finite() && self.numerics.delta >= 0.0) {
+            return Err(err("numerics.delta", "a non-negative δ (0.1 is the default)"));
+        }
+        match self.numerics.viscosity {
+            Viscosity::Artificial { alpha } if !(alpha.is_finite() && alpha >= 0.0) => {
+                return Err(err("numerics.viscosity.alpha", "a non-negative α"))
+            }
+            Viscosity::Physical { nu } if !(nu.is_finite() && nu >= 0.0) => return Err(err("numerics.viscosity.nu", "a non-negative ν in m²/s")),
+            _ => {}
+        }
+        match &self.body_force {
+            BodyForceSpec::Gravity { g } if !vec_ok(g) => return Err(err("body_force.g", "a 2-component acceleration in m/s²")),
+            BodyForceSpec::Central { omega, centre } if !(omega.is_finite() && vec_ok(centre)) => {
+                return Err(err("body_force", "a finite `omega` (1/s) and a 2-component `centre` (m)"))
+            }
+            _ => {}
+        }
+        if !vec_ok(&self.domain.min) || !vec_ok(&self.domain.max) || (0..d).any(|k| self.domain.min[k] >= self.domain.max[k]) {
+            return Err(err("domain", "`min` and `max` as 2-component points with min < max (m)"));
+        }
+        for (k, w) in self.walls.iter().enumerate() {
+            if w.points.len() < 2 || !w.points.iter().all(vec_ok) {
+                return Err(err(&format!("walls[{k}].points"), "at least two 2-component points (m)"));
+            }
+            if w.points.windows(2).any(|p| (p[0][0] - p[1][0]).hypot(p[0][1] - p[1][1]) == 0.0) {
+                return Err(err(&format!("walls[{k}].points"), "no repeated consecutive points"));
+            }
+            if let Some(v) = &w.velocity {
+                if !vec_ok(v) {
+                    return Err(err(&format!("walls[{k}].velocity"), "a 2-component velocity in m/s"));
+                }
+            }
+        }
+        if self.blocks.is_empty() {
+            return Err(err("blocks", "at least one fluid block"));
+        }
+        for (k, b) in self.blocks.iter().enumerate() {
+            let (vel, grad) = match b {
+                BlockSpec::Rectangle { min, max, velocity, velocity_gradient, .. } => {
+                    if !vec_ok(min) || !vec_ok(max) || (0..d).any(|i| min[i] >= max[i]) {
+                        return Err(err(&format!("blocks[{k}]"), "`min` < `max`, 2-component points in metres"));
+                    }
+                    (velocity, velocity_gradient)
+                }
+                BlockSpec::Disc { centre, radius, velocity, velocity_gradient, .. } => {
+                    if !vec_ok(centre) || !pos(*radius) {
+                        return Err(err(&format!("blocks[{k}]"), "a 2-component `centre` and a positive `radius` (m)"));
+                    }
+                    (velocity, velocity_gradient)
+                }
+            };
+            if let Some(v) = vel {
+                if !vec_ok(v) {
+                    return Err(err(&format!("blocks[{k}].velocity"), "a 2-component velocity (m/s)"));
+                }
+            }
+            if let Some(g) = grad {
+                if g.len() != d || !g.iter().all(vec_ok) {
+                    return Err(err(&format!("blocks[{k}].velocity_gradient"), "a 2×2 matrix [[a, b], [c, d]] in 1/s"));
+                }
+            }
+        }
+        for (k, p) in self.probes.pressure.iter().enumerate() {
+            if !vec_ok(&p.position) || !vec_ok(&p.direction) || (p.direction[0].hypot(p.direction[1]) - 1.0).abs() > 1e-6 {
+                return Err(err(&format!("probes.pressure[{k}]"), "a 2-component `position` (m) and a unit `direction`"));
+            }
+            if !(p.size.is_finite() && p.size >= 0.0) {
+                return Err(err(&format!("probes.pressure[{k}].size"), "a non-negative sensor size (m)"));
+            }
+        }
+        if !pos(self.output.end_time) {
+            return Err(err("output.end_time", "a positive end time in seconds"));
+        }
+        if !pos(self.output.series_every) {
+            return Err(err("output.series_every", "a positive sampling interval in seconds"));
+        }
+        if !(self.output.vtk_every.is_finite() && self.output.vtk_every >= 0.0) {
+            return Err(err("output.vtk_every", "a non-negative interval in seconds (0: no snapshots)"));
+        }
+        Ok(())
+    }
+
+    /// |g| for the non-dimensional scales (1 without gravity).
+    pub fn gravity_magnitude(&self) -> f64 {
+        match &self.body_force {
+            BodyForceSpec::Gravity { g } => g.iter().map(|x| x * x).sum::<f64>().sqrt(),
+            _ => 1.0,
+        }
+    }
+
+    /// Speed of sound c0 (m/s).
+    pub fn c0(&self) -> f64 {
+        match (self.fluid.c0, self.fluid.c0_over_sqrt_g_length) {
+            (Some(c), _) => c,
+            (None, Some(f)) => f * (self.gravity_magnitude() * self.scales.length).sqrt(),
+            _ => unreachable!("checked in parse"),
+        }
+    }
+}

@@ -1,0 +1,237 @@
+//! Runs one case: steps the simulation to the end time, samples the time series (energies, probes, gauges,
+//! front, wall forces, drop semi-axes), writes VTK snapshots, and on request the CSV and plots.
+//! A blow-up stops the run with a diagnosis; what was computed until then is kept and written.
+
+use super::case_file::CaseFile;
+use super::setup;
+use crate::io::{csv_table::Table, vtk};
+use crate::sph::{diagnostics, solver::{BlowUp, Simulation}};
+use nalgebra::Vector2;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// How to run.
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// length/dx; `None`: the case's default.
+    pub res: Option<f64>,
+    /// End time override (s).
+    pub end_time: Option<f64>,
+    /// Where to write outputs; `None`: nothing is written (tests, validation).
+    pub out_dir: Option<PathBuf>,
+    pub progress: bool,
+    pub vtk: bool,
+}
+
+/// What a run produced.
+pub struct RunResult {
+    pub case: CaseFile,
+    pub dx: f64,
+    pub series: Table,
+    pub blowup: Option<BlowUp>,
+    pub steps: u64,
+    pub n_fluid: usize,
+    pub wall_seconds: f64,
+    pub files: Vec<PathBuf>,
+    pub sim: Simulation<2>,
+}
+
+impl RunResult {
+    /// Fluid particles × time steps / wall second (a step counts once, whatever its RK stages).
+    pub fn particle_steps_per_second(&self) -> f64 {
+        self.n_fluid as f64 * self.steps as f64 / self.wall_seconds.max(1e-12)
+    }
+}
+
+/// Column names of the time series of a case.
+fn columns(case: &CaseFile, nwalls: usize) -> Vec<String> {
+    let mut c: Vec<String> = ["t", "t_star", "dt", "e_kinetic", "e_potential", "e_elastic", "e_mechanical", "de_mechanical_rel", "semi_axis_x", "semi_axis_y"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    if case.probes.front {
+        c.push("front".into());
+        c.push("front_star".into());
+    }
+    for p in &case.probes.pressure {
+        c.push(format!("p_{}", p.name));
+        c.push(format!("pstar_{}", p.name));
+    }
+    for g in &case.probes.gauge {
+        c.push(format!("eta_{}", g.name));
+    }
+    for w in case.walls.iter().take(nwalls) {
+        c.push(format!("fx_{}", w.name));
+        c.push(format!("fy_{}", w.name));
+    }
+    c
+}
+
+/// Sensor average of the pressure: 5 points over the sensor length along the wall (Pa).
+fn sensor_pressure(sim: &Simulation<2>, pos: &[f64], dir: &[f64], size: f64) -> f64 {
+    let (c, d) = (Vector2::new(pos[0], pos[1]), Vector2::new(dir[0], dir[1]));
+    let n = if size > 0.0 { 5 } else { 1 };
+    let mut s = 0.0;
+    for k in 0..n {
+        let f = if n == 1 { 0.0 } else { k as f64 / (n - 1) as f64 - 0.5 };
+        s += sim.pressure_at(&(c + d * (f * size))).unwrap_or(0.0);
+    }
+    s / n as f64
+}
+
+struct Sampler {
+    t_scale: f64,
+    p_scale: f64,
+    e0: f64,
+    e_scale: f64,
+}
+
+fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
+    sim.refresh();
+    let e = diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force);
+    let (_, m2) = diagnostics::moments(&sim.fluid);
+    let mut row = vec![
+        sim.time,
+        sim.time / s.t_scale,
+        sim.last_dt,
+        e.kinetic,
+        e.potential,
+        e.elastic,
+        e.mechanical(),
+        (e.mechanical() - s.e0) / s.e_scale,
+        2.0 * m2[0].sqrt(),
+        2.0 * m2[1].sqrt(),
+    ];
+    if case.probes.front {
+        let f = diagnostics::front(&sim.fluid, 0, sim.cfg.dx);
+        row.push(f);
+        row.push(f / case.scales.length);
+    }
+    for p in &case.probes.pressure {
+        let v = sensor_pressure(sim, &p.position, &p.direction, p.size);
+        row.push(v);
+        row.push(v / s.p_scale);
+    }
+    for g in &case.probes.gauge {
+        row.push(diagnostics::gauge(&sim.fluid, g.x, sim.cfg.dx).unwrap_or(f64::NAN));
+    }
+    let forces = sim.boundary_forces();
+    for f in forces.iter().take(case.walls.len()) {
+        row.push(f.x);
+        row.push(f.y);
+    }
+    row
+}
+
+/// Writes the fluid particles of `sim` as a .vtp file.
+pub fn write_snapshot(sim: &Simulation<2>, path: &Path) -> std::io::Result<()> {
+    let f = &sim.fluid;
+    let pts: Vec<[f64; 3]> = f.pos.iter().map(|p| [p.x, p.y, 0.0]).collect();
+    let p: Vec<f64> = f.rho.iter().map(|&r| sim.cfg.eos.pressure(r)).collect();
+    vtk::write_vtp(
+        path,
+        &pts,
+        &[
+            vtk::PointData::Vector("velocity", f.vel.iter().map(|v| [v.x, v.y, 0.0]).collect()),
+            vtk::PointData::Scalar("pressure", p),
+            vtk::PointData::Scalar("density", f.rho.clone()),
+            vtk::PointData::Scalar("id", f.id.iter().map(|&i| i as f64).collect()),
+            vtk::PointData::Scalar("initial_depth", f.tag.clone()),
+        ],
+    )
+}
+
+/// Runs a case.
+pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
+    let mut sim = setup::build(case, opts.res);
+    let dx = sim.cfg.dx;
+    let g = case.gravity_magnitude();
+    let l = case.scales.length;
+    let e_init = diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force);
+    let mass = sim.fluid.total_mass();
+    let has_gravity = matches!(case.body_force, super::case_file::BodyForceSpec::Gravity { .. });
+    let sampler = Sampler {
+        t_scale: (l / g).sqrt(),
+        p_scale: case.fluid.rho0 * g * l,
+        e0: e_init.mechanical(),
+        e_scale: if has_gravity { mass * g * l } else { (e_init.kinetic + e_init.elastic).abs().max(1e-300) },
+    };
+    let end = opts.end_time.unwrap_or(case.output.end_time);
+    let mut series = Table::new(columns(case, sim.boundaries.len()));
+    let mut files = vec![];
+    let vtk_dir = opts.out_dir.as_ref().map(|d| d.join("vtk"));
+    let mut pvd: Vec<(f64, String)> = vec![];
+    let want_vtk = opts.vtk && case.output.vtk_every > 0.0 && vtk_dir.is_some();
+    let snapshot = |sim: &Simulation<2>, pvd: &mut Vec<(f64, String)>| -> anyhow::Result<()> {
+        if let Some(dir) = &vtk_dir {
+            let name = format!("{}_{:05}.vtp", case.name, pvd.len());
+            write_snapshot(sim, &dir.join(&name))?;
+            pvd.push((sim.time, name));
+            vtk::write_pvd(&dir.join(format!("{}.pvd", case.name)), pvd)?;
+        }
+        Ok(())
+    };
+
+    series.push(sample(case, &mut sim, &sampler));
+    if want_vtk {
+        snapshot(&sim, &mut pvd)?;
+    }
+    let mut next_sample = case.output.series_every;
+    let mut next_vtk = case.output.vtk_every;
+    let bar = if opts.progress {
+        let b = indicatif::ProgressBar::new(1000);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {percent:>3}% {msg} ETA {eta}")
+                .expect("valid template"),
+        );
+        Some(b)
+    } else {
+        None
+    };
+    let start = Instant::now();
+    let mut blowup = None;
+    while sim.time < end - 1e-12 {
+        match sim.step() {
+            Ok(_) => {}
+            Err(e) => {
+                blowup = Some(e);
+                break;
+            }
+        }
+        if sim.time >= next_sample - 1e-12 || sim.time >= end - 1e-12 {
+            series.push(sample(case, &mut sim, &sampler));
+            while next_sample <= sim.time + 1e-12 {
+                next_sample += case.output.series_every;
+            }
+        }
+        if want_vtk && sim.time >= next_vtk - 1e-12 {
+            snapshot(&sim, &mut pvd)?;
+            while next_vtk <= sim.time + 1e-12 {
+                next_vtk += case.output.vtk_every;
+            }
+        }
+        if let Some(b) = &bar {
+            b.set_position((1000.0 * sim.time / end).min(1000.0) as u64);
+            b.set_message(format!("t* = {:.3}, step {}", sim.time / sampler.t_scale, sim.steps));
+        }
+    }
+    let wall_seconds = start.elapsed().as_secs_f64();
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    if let Some(dir) = &opts.out_dir {
+        let p = dir.join(format!("{}_series.csv", case.name));
+        series.write(&p)?;
+        files.push(p);
+        if blowup.is_some() {
+            let p = dir.join(format!("{}_last_good_state.vtp", case.name));
+            write_snapshot(&sim, &p)?;
+            files.push(p);
+        }
+        if want_vtk {
+            files.push(dir.join("vtk").join(format!("{}.pvd", case.name)));
+        }
+    }
+    let n_fluid = sim.n_fluid();
+    Ok(RunResult { case: case.clone(), dx, series, blowup, steps: sim.steps, n_fluid, wall_seconds, files, sim })
+}

@@ -1,0 +1,140 @@
+//! Turns a [`CaseFile`] into a ready-to-run 2D [`Simulation`]: particles on the lattice (rectangles) or on
+//! concentric rings (discs), initial pressure and density, walls as ghost layers.
+
+use super::case_file::{BlockSpec, BodyForceSpec, CaseFile, PressureSpec};
+use crate::sph::{
+    body_force::BodyForce,
+    boundary::{Boundary, RigidMotion},
+    eos::Eos,
+    particles::Fluid,
+    polyline_wall::PolylineWall,
+    solver::{Simulation, SolverConfig},
+};
+use nalgebra::{Matrix2, Vector2};
+
+type V2 = Vector2<f64>;
+
+fn v2(v: &[f64]) -> V2 {
+    V2::new(v[0], v[1])
+}
+
+/// Resolution actually used: `res` (length/dx) if given, else the case's default.
+pub fn spacing(case: &CaseFile, res: Option<f64>) -> f64 {
+    case.scales.length / res.unwrap_or(case.scales.resolution)
+}
+
+/// The solver configuration of a case at spacing `dx`.
+pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
+    let body = match &case.body_force {
+        BodyForceSpec::Gravity { g } => BodyForce::Uniform(v2(g)),
+        BodyForceSpec::Central { omega, centre } => BodyForce::Central { omega: *omega, centre: v2(centre) },
+        BodyForceSpec::None => BodyForce::Uniform(V2::zeros()),
+    };
+    let c0 = case.c0();
+    let mut cfg = SolverConfig::new(dx, case.fluid.rho0, c0, body);
+    let n = &case.numerics;
+    cfg.kernel = n.kernel;
+    cfg.h = n.h_over_dx.unwrap_or(n.kernel.default_h_over_dx()) * dx;
+    cfg.eos = Eos { kind: case.fluid.eos, rho0: case.fluid.rho0, c0 };
+    cfg.viscosity = n.viscosity;
+    cfg.diffusion = n.density_diffusion;
+    cfg.delta = n.delta;
+    cfg.integrator = n.integrator;
+    cfg.cfl = n.cfl.unwrap_or(n.integrator.default_cfl());
+    cfg.domain = Some((v2(&case.domain.min), v2(&case.domain.max)));
+    cfg.dt_floor = 1e-3 * cfg.h / c0;
+    cfg
+}
+
+/// The fluid particles of a case at spacing `dx`.
+pub fn fluid(case: &CaseFile, dx: f64, eos: &Eos, body: &BodyForce<2>) -> Fluid<2> {
+    let mut f = Fluid::default();
+    let g_down = match body {
+        BodyForce::Uniform(g) => -g.y,
+        _ => 0.0,
+    };
+    for b in &case.blocks {
+        match b {
+            BlockSpec::Rectangle { min, max, pressure, velocity, velocity_gradient } => {
+                let (lo, hi) = (v2(min), v2(max));
+                let nx = ((hi.x - lo.x) / dx).round() as usize;
+                let ny = ((hi.y - lo.y) / dx).round() as usize;
+                let centre = (lo + hi) * 0.5;
+                for j in 0..ny {
+                    for i in 0..nx {
+                        let x = lo + V2::new((i as f64 + 0.5) * dx, (j as f64 + 0.5) * dx);
+                        let p = match pressure {
+                            PressureSpec::Zero => 0.0,
+                            PressureSpec::Hydrostatic => eos.rho0 * g_down * (hi.y - x.y),
+                            PressureSpec::Paraboloid { p_centre } => {
+                                p_centre * (1.0 - (x - centre).norm_squared() / (0.5 * (hi - lo)).norm_squared())
+                            }
+                        };
+                        let u = velocity_at(velocity, velocity_gradient, &x, &centre);
+                        let rho = eos.density(p);
+                        f.push(x, u, rho, rho * dx * dx, hi.y - x.y);
+                    }
+                }
+            }
+            BlockSpec::Disc { centre, radius, pressure, velocity, velocity_gradient } => {
+                let c = v2(centre);
+                let nr = (radius / dx).round().max(1.0) as usize;
+                let dr = radius / nr as f64;
+                for k in 0..nr {
+                    let r = (k as f64 + 0.5) * dr;
+                    let n = ((2.0 * std::f64::consts::PI * r / dr).round() as usize).max(1);
+                    // Area of the ring shared equally by its n particles.
+                    let area = std::f64::consts::PI * ((r + 0.5 * dr).powi(2) - (r - 0.5 * dr).powi(2)) / n as f64;
+                    let phase = if k % 2 == 0 { 0.0 } else { 0.5 };
+                    for m in 0..n {
+                        let th = 2.0 * std::f64::consts::PI * (m as f64 + phase) / n as f64;
+                        let x = c + V2::new(r * th.cos(), r * th.sin());
+                        let p = match pressure {
+                            PressureSpec::Zero => 0.0,
+                            PressureSpec::Hydrostatic => 0.0,
+                            PressureSpec::Paraboloid { p_centre } => p_centre * (1.0 - (r / radius).powi(2)),
+                        };
+                        let u = velocity_at(velocity, velocity_gradient, &x, &c);
+                        let rho = eos.density(p);
+                        f.push(x, u, rho, rho * area, radius - r);
+                    }
+                }
+            }
+        }
+    }
+    f
+}
+
+fn velocity_at(velocity: &Option<Vec<f64>>, gradient: &Option<Vec<Vec<f64>>>, x: &V2, centre: &V2) -> V2 {
+    let mut u = velocity.as_ref().map(|v| v2(v)).unwrap_or_else(V2::zeros);
+    if let Some(g) = gradient {
+        let m = Matrix2::new(g[0][0], g[0][1], g[1][0], g[1][1]);
+        u += m * (x - centre);
+    }
+    u
+}
+
+/// The walls of a case as ghost-particle boundaries.
+pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>> {
+    case.walls
+        .iter()
+        .map(|w| {
+            let motion = match &w.velocity {
+                Some(v) => RigidMotion::ConstantVelocity(v2(v)),
+                None => RigidMotion::Fixed,
+            };
+            Box::new(PolylineWall::new(&w.name, w.points.iter().map(|p| v2(p)).collect(), w.fluid_side, motion, dx, support))
+                as Box<dyn Boundary<2>>
+        })
+        .collect()
+}
+
+/// The whole simulation of a case at resolution `res` (length/dx; `None`: the case's default).
+pub fn build(case: &CaseFile, res: Option<f64>) -> Simulation<2> {
+    let dx = spacing(case, res);
+    let cfg = solver_config(case, dx);
+    let support = cfg.kernel.support_over_h() * cfg.h;
+    let fl = fluid(case, dx, &cfg.eos, &cfg.body_force);
+    let w = walls(case, dx, support);
+    Simulation::new(cfg, fl, w)
+}
