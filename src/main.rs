@@ -62,6 +62,14 @@ enum Command {
         #[arg(long, value_delimiter = ',', default_value = "1,2")]
         threads: Vec<usize>,
     },
+    /// (Internal) one benchmark configuration, printed as JSON; used by `bench`.
+    #[command(hide = true)]
+    BenchOne {
+        #[arg(long)]
+        res: f64,
+        #[arg(long)]
+        end: f64,
+    },
     /// List the built-in cases, or print one as TOML to start a case file from.
     Cases {
         /// Print this built-in case's TOML.
@@ -88,6 +96,10 @@ fn main() -> anyhow::Result<()> {
         }
         Command::Bench { res, end, threads } => {
             bench::bench_cli(&res, end, &threads)?;
+        }
+        Command::BenchOne { res, end } => {
+            let r = bench::bench_one(res, end)?;
+            println!("{}", serde_json::to_string(&r)?);
         }
         Command::Cases { name } => match name {
             None => {

@@ -87,6 +87,9 @@ pub struct Numerics {
     pub delta: f64,
     #[serde(default)]
     pub viscosity: Viscosity,
+    /// "mls" (first order, eq. 7.6; default) or "shepard".
+    #[serde(default)]
+    pub ghost_interpolation: crate::sph::solver::GhostInterpolation,
 }
 
 fn default_kernel() -> KernelKind {
@@ -106,6 +109,7 @@ impl Default for Numerics {
             density_diffusion: DensityDiffusion::default(),
             delta: default_delta(),
             viscosity: Viscosity::default(),
+            ghost_interpolation: Default::default(),
         }
     }
 }

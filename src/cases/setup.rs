@@ -43,6 +43,7 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     cfg.cfl = n.cfl.unwrap_or(n.integrator.default_cfl());
     cfg.domain = Some((v2(&case.domain.min), v2(&case.domain.max)));
     cfg.dt_floor = 1e-3 * cfg.h / c0;
+    cfg.ghost_interpolation = n.ghost_interpolation;
     cfg
 }
 

@@ -17,6 +17,17 @@ pub struct GhostGeometry<const D: usize> {
     pub wall_acc: Vec<SVector<f64, D>>,
     /// Volume of each ghost, ds^D (m^D).
     pub volume: Vec<f64>,
+    /// How the ghost mirrors its interpolation point: through a plane (a wall side) or through a point
+    /// (a corner vertex, the central symmetry of thesis Fig. 7.3).
+    pub mirror: Vec<Mirror>,
+}
+
+/// The symmetry relating a ghost to its interpolation point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Mirror {
+    #[default]
+    Plane,
+    Point,
 }
 
 impl<const D: usize> GhostGeometry<D> {
@@ -32,6 +43,7 @@ impl<const D: usize> GhostGeometry<D> {
         self.wall_vel.clear();
         self.wall_acc.clear();
         self.volume.clear();
+        self.mirror.clear();
     }
     pub fn append(&mut self, other: &GhostGeometry<D>) {
         self.pos.extend_from_slice(&other.pos);
@@ -39,6 +51,7 @@ impl<const D: usize> GhostGeometry<D> {
         self.wall_vel.extend_from_slice(&other.wall_vel);
         self.wall_acc.extend_from_slice(&other.wall_acc);
         self.volume.extend_from_slice(&other.volume);
+        self.mirror.extend_from_slice(&other.mirror);
     }
 }
 

@@ -4,10 +4,18 @@
 //! (rows 2..D+1 of M⁻¹), used for the ghosts' density gradient.
 //!
 //! M is a 4×4 matrix for any D ≤ 3: the unused rows and columns are the identity.
-//! Where M is ill-conditioned (a point with too few or one-sided neighbours: det M < 1e-3 M₀₀^{D+1}) the
-//! fit falls back to the Shepard average Σ f_j W_j V_j / Σ W_j V_j with zero gradient.
+//! Where the fit would amplify noise — M ill-conditioned (det M < 1e-3 M₀₀^{D+1}) or a Lebesgue constant
+//! Σ_j |w_j| above [`MAX_LEBESGUE`], which happens at points with few, one-sided or colinear neighbours (a
+//! thin jet, a splash against a wall) — it falls back to the Shepard average Σ f_j W_j V_j / Σ W_j V_j with
+//! zero gradient. Without this guard, extrapolated ghost pressures of −10 ρgH appeared at the first
+//! dam-break impact and pulled particles through the wall (regression test
+//! `sparse_neighbourhood_falls_back_to_shepard`).
 
 use nalgebra::{Matrix4, SVector, Vector4};
+
+/// Largest Σ|w_j| accepted for a first-order fit: 2 allows the one-sided fits at a wall (about 1.2–1.5 on a
+/// lattice) and rejects the wild extrapolations of sparse neighbourhoods.
+pub const MAX_LEBESGUE: f64 = 2.0;
 
 /// Weights of one MLS fit: value f(x) = Σ f_j w_j; gradient ∇f(x) = Σ f_j g_j.
 #[derive(Clone, Debug, Default)]
@@ -68,29 +76,42 @@ pub fn mls_weights<const D: usize>(h: f64, neighbours: &[(usize, SVector<f64, D>
     let det = m.determinant();
     let inv = if m00 > 0.0 && det > 1e-3 * m00.powi(D as i32 + 1) { m.try_inverse() } else { None };
     out.neighbours = neighbours.iter().map(|n| n.0).collect();
-    match inv {
-        Some(inv) => {
+    if let Some(inv) = inv {
+        for (_, dx, wv) in neighbours {
+            let b = b_of(dx);
+            let c = inv * b * *wv;
+            out.value.push(c[0]);
+            let mut g = SVector::<f64, D>::zeros();
+            for d in 0..D {
+                g[d] = c[d + 1] / h;
+            }
+            out.gradient.push(g);
+        }
+        let lebesgue: f64 = out.value.iter().map(|w| w.abs()).sum();
+        if lebesgue <= MAX_LEBESGUE {
             out.first_order = true;
-            for (_, dx, wv) in neighbours {
-                let b = b_of(dx);
-                let c = inv * b * *wv;
-                out.value.push(c[0]);
-                let mut g = SVector::<f64, D>::zeros();
-                for d in 0..D {
-                    g[d] = c[d + 1] / h;
-                }
-                out.gradient.push(g);
-            }
+            return out;
         }
-        None => {
-            let s: f64 = neighbours.iter().map(|n| n.2).sum();
-            for (_, _, wv) in neighbours {
-                out.value.push(if s > 0.0 { wv / s } else { 0.0 });
-                out.gradient.push(SVector::zeros());
-            }
-        }
+        out.value.clear();
+        out.gradient.clear();
+    }
+    let s: f64 = neighbours.iter().map(|n| n.2).sum();
+    for (_, _, wv) in neighbours {
+        out.value.push(if s > 0.0 { wv / s } else { 0.0 });
+        out.gradient.push(SVector::zeros());
     }
     out
+}
+
+/// Zeroth-order (Shepard) weights from neighbours given as (index, x − x_j, W_j V_j); zero gradient.
+pub fn shepard_weights<const D: usize>(neighbours: &[(usize, SVector<f64, D>, f64)]) -> MlsWeights<D> {
+    let s: f64 = neighbours.iter().map(|n| n.2).sum();
+    MlsWeights {
+        neighbours: neighbours.iter().map(|n| n.0).collect(),
+        value: neighbours.iter().map(|n| if s > 0.0 { n.2 / s } else { 0.0 }).collect(),
+        gradient: vec![SVector::zeros(); neighbours.len()],
+        first_order: false,
+    }
 }
 
 #[cfg(test)]
@@ -121,5 +142,22 @@ mod tests {
         assert!((w.interpolate(|j| f(&pts[j])) - f(&x)).abs() < 1e-10);
         let g = w.gradient_of(|j| f(&pts[j]));
         assert!((g[0] - 2.0).abs() < 1e-9 && (g[1] + 5.0).abs() < 1e-9);
+        let leb: f64 = w.value.iter().map(|v| v.abs()).sum();
+        assert!(leb < MAX_LEBESGUE, "one-sided lattice fit must stay first order: {leb}");
+    }
+
+    #[test]
+    fn sparse_neighbourhood_falls_back_to_shepard() {
+        // Three nearly colinear particles far to one side of the point: a first-order fit would extrapolate.
+        let h = 0.1;
+        let k = Kernel::<2>::new(KernelKind::RenormalizedGaussian, h);
+        let pts = [SVector::from([0.20, 0.00]), SVector::from([0.22, 0.01]), SVector::from([0.24, 0.00]), SVector::from([0.21, 0.03])];
+        let x = SVector::from([0.0, 0.0]);
+        let nb: Vec<_> = pts.iter().enumerate().map(|(j, p)| (j, x - p, k.w((x - p).norm()) * 0.01 * 0.01)).collect();
+        let w = mls_weights::<2>(h, &nb);
+        assert!(!w.first_order);
+        let vals = [1.0, 2.0, 3.0, 4.0];
+        let v = w.interpolate(|j| vals[j]);
+        assert!((1.0..=4.0).contains(&v), "Shepard stays within the data: {v}");
     }
 }

@@ -10,7 +10,7 @@
 //! that are sampled from the corner outwards, so a rectangular tank gets ghosts on the fluid's own lattice.
 //! Fluid angles above π (Figs. 7.4–7.5: bisector ghosts, narrow angles) are not treated specially yet.
 
-use super::boundary::{Boundary, GhostGeometry, RigidMotion};
+use super::boundary::{Boundary, GhostGeometry, Mirror, RigidMotion};
 use nalgebra::Vector2;
 
 type V2 = Vector2<f64>;
@@ -73,6 +73,7 @@ impl Boundary<2> for PolylineWall {
         out.wall_vel.extend(self.base.pos.iter().map(|_| v));
         out.wall_acc.extend(self.base.pos.iter().map(|_| a));
         out.volume.extend_from_slice(&self.base.volume);
+        out.mirror.extend_from_slice(&self.base.mirror);
     }
 }
 
@@ -200,6 +201,8 @@ pub fn ghost_layers(points: &[V2], side: FluidSide, ds: f64, support: f64) -> Gh
         let q = offset_polyline(points, &normals, d);
         for p in sample_offset(&q, &normals, ds) {
             let foot = nearest_point(points, &p);
+            let at_vertex = points[1..points.len() - 1].iter().any(|v| (v - foot).norm() < 1e-9 * ds);
+            g.mirror.push(if at_vertex { Mirror::Point } else { Mirror::Plane });
             g.pos.push(p);
             g.interp.push(foot * 2.0 - p);
             g.wall_vel.push(V2::zeros());
@@ -240,6 +243,8 @@ mod tests {
         for (p, q) in corner {
             assert!((p + q).norm() < 1e-12);
         }
+        let points = g.mirror.iter().filter(|m| **m == Mirror::Point).count();
+        assert_eq!(points, 32, "the two 4x4 corner blocks mirror through the vertices");
         // Count: bottom 4 layers × 20 + two sides × 4 layers × 10 + two corners × 16.
         assert_eq!(g.pos.len(), 4 * 20 + 2 * 4 * 10 + 2 * 16);
     }

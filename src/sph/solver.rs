@@ -11,7 +11,7 @@
 //! writing only to the particle's own slot: results are bit-identical for any number of threads.
 
 use super::body_force::BodyForce;
-use super::boundary::{Boundary, GhostGeometry};
+use super::boundary::{Boundary, GhostGeometry, Mirror};
 use super::equations::{
     continuity, density_diffusion::{self, DensityDiffusion}, ghost_conditions, pressure_force,
     renormalization::RenormalizedGradient, timestep, viscosity::{self, Viscosity}, wall_force,
@@ -19,11 +19,12 @@ use super::equations::{
 use super::eos::Eos;
 use super::integrator::Integrator;
 use super::kernel::{Kernel, KernelKind};
-use super::mls::mls_weights;
+use super::mls::{mls_weights, shepard_weights};
 use super::neighbours::CellList;
 use super::particles::Fluid;
 use nalgebra::SVector;
 use rayon::prelude::*;
+use std::time::Instant;
 
 /// Numerical and physical parameters of a run.
 #[derive(Clone, Debug)]
@@ -45,6 +46,19 @@ pub struct SolverConfig<const D: usize> {
     pub domain: Option<(SVector<f64, D>, SVector<f64, D>)>,
     /// A time step below this (s) stops the run; default 1e-3 of the initial acoustic step h/c0.
     pub dt_floor: f64,
+    /// How ghost values are interpolated at their mirror points.
+    pub ghost_interpolation: GhostInterpolation,
+}
+
+/// Interpolation of the fluid at the ghosts' mirror points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum GhostInterpolation {
+    /// First-order MLS, eq. (7.6) (Shepard where ill-conditioned). The default.
+    #[default]
+    Mls,
+    /// Zeroth-order Shepard average Σ f W V / Σ W V.
+    Shepard,
 }
 
 impl<const D: usize> SolverConfig<D> {
@@ -65,6 +79,7 @@ impl<const D: usize> SolverConfig<D> {
             body_force,
             domain: None,
             dt_floor: 1e-3 * h / c0,
+            ghost_interpolation: GhostInterpolation::Mls,
         }
     }
 }
@@ -134,6 +149,21 @@ pub struct StepReport {
     pub time: f64,
 }
 
+/// Wall time spent in each stage since the start (for the benchmark's breakdown).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct StageTimings {
+    /// Ghost placement, cell list and re-ordering (neighbour search set-up), s.
+    pub neighbour_search: f64,
+    /// Mirroring the fluid onto the ghosts (MLS), s.
+    pub ghost_mirroring: f64,
+    /// Renormalised density gradient, eqs. (4.19)–(4.20), s.
+    pub density_gradient: f64,
+    /// Continuity and momentum gather loop, s.
+    pub main_loop: f64,
+    /// Time integration, checks, copies, s.
+    pub update: f64,
+}
+
 /// A running simulation.
 pub struct Simulation<const D: usize> {
     pub cfg: SolverConfig<D>,
@@ -144,6 +174,7 @@ pub struct Simulation<const D: usize> {
     pub time: f64,
     pub steps: u64,
     pub last_dt: f64,
+    pub timings: StageTimings,
     cells: CellList<D>,
     all_pos: Vec<SVector<f64, D>>,
     pressure: Vec<f64>,
@@ -163,6 +194,7 @@ impl<const D: usize> Simulation<D> {
             time: 0.0,
             steps: 0,
             last_dt: 0.0,
+            timings: StageTimings::default(),
             cells: CellList::default(),
             all_pos: vec![],
             pressure: vec![],
@@ -199,6 +231,7 @@ impl<const D: usize> Simulation<D> {
 
     /// Stages 1–3 at (t, pos, vel, rho): ghosts, cell list, mirroring. Leaves `pressure` filled.
     fn prepare(&mut self, t: f64, pos: &[SVector<f64, D>], vel: &[SVector<f64, D>], rho: &[f64]) {
+        let clock = Instant::now();
         if !self.ghosts_static {
             self.place_ghosts(t);
         }
@@ -209,6 +242,8 @@ impl<const D: usize> Simulation<D> {
         self.cells = CellList::build(&self.all_pos, self.kernel.support);
         let eos = self.cfg.eos;
         self.pressure = rho.par_iter().map(|&r| eos.pressure(r)).collect();
+        self.timings.neighbour_search += clock.elapsed().as_secs_f64();
+        let clock = Instant::now();
 
         // Stage 3: mirror the fluid onto the ghosts.
         let kernel = self.kernel;
@@ -218,6 +253,7 @@ impl<const D: usize> Simulation<D> {
         let mass = &self.fluid.mass;
         let body = self.cfg.body_force;
         let geom = &self.ghosts.geom;
+        let shepard = self.cfg.ghost_interpolation == GhostInterpolation::Shepard;
         let values: Vec<(SVector<f64, D>, f64, f64, SVector<f64, D>)> = (0..geom.len())
             .into_par_iter()
             .map(|g| {
@@ -232,7 +268,7 @@ impl<const D: usize> Simulation<D> {
                 if nb.is_empty() {
                     return (wall_vel, eos.rho0, 0.0, SVector::zeros());
                 }
-                let w = mls_weights(kernel.h, &nb);
+                let w = if shepard { shepard_weights(&nb) } else { mls_weights(kernel.h, &nb) };
                 let p_i = w.interpolate(|j| pressure[j]);
                 let rho_i = w.interpolate(|j| rho[j]);
                 let u_i = w.interpolate_vec(|j| vel[j]);
@@ -242,7 +278,10 @@ impl<const D: usize> Simulation<D> {
                 let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
                 let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
                 let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
-                let u_g = ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n);
+                let u_g = match geom.mirror[g] {
+                    Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
+                    Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
+                };
                 let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
                 let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
                 (u_g, eos.density(p_g), p_g, grad_g)
@@ -253,6 +292,7 @@ impl<const D: usize> Simulation<D> {
         gs.rho = values.iter().map(|v| v.1).collect();
         gs.p = values.iter().map(|v| v.2).collect();
         gs.grad_rho = values.iter().map(|v| v.3).collect();
+        self.timings.ghost_mirroring += clock.elapsed().as_secs_f64();
     }
 
     /// Stages 4–5: the rates of change of ρ and u.
@@ -268,6 +308,7 @@ impl<const D: usize> Simulation<D> {
         let h = kernel.h;
 
         // Stage 4: renormalised density gradient, eqs. (4.19)–(4.20).
+        let clock = Instant::now();
         if cfg.diffusion.needs_gradient() {
             self.grad_rho = (0..nf)
                 .into_par_iter()
@@ -291,6 +332,8 @@ impl<const D: usize> Simulation<D> {
         } else {
             self.grad_rho = vec![SVector::zeros(); nf];
         }
+        self.timings.density_gradient += clock.elapsed().as_secs_f64();
+        let clock = Instant::now();
         let grad_rho = &self.grad_rho;
         let pressure = &self.pressure;
         let eos = cfg.eos;
@@ -342,6 +385,7 @@ impl<const D: usize> Simulation<D> {
             rates.drho.push(dr);
             rates.dvel.push(dv);
         }
+        self.timings.main_loop += clock.elapsed().as_secs_f64();
         rates
     }
 
@@ -354,6 +398,18 @@ impl<const D: usize> Simulation<D> {
 
     /// Advances one time step. On a blow-up the state before the step is kept and a diagnosis returned.
     pub fn step(&mut self) -> Result<StepReport, BlowUp> {
+        let clock = Instant::now();
+        let before = self.timings;
+        let r = self.step_inner();
+        let inner = (self.timings.neighbour_search - before.neighbour_search)
+            + (self.timings.ghost_mirroring - before.ghost_mirroring)
+            + (self.timings.density_gradient - before.density_gradient)
+            + (self.timings.main_loop - before.main_loop);
+        self.timings.update += clock.elapsed().as_secs_f64() - inner;
+        r
+    }
+
+    fn step_inner(&mut self) -> Result<StepReport, BlowUp> {
         self.reorder();
         let t0 = self.time;
         let pos0 = self.fluid.pos.clone();

@@ -3,6 +3,8 @@
 //! central-symmetry direction at a corner):
 //! * free slip, eqs. (7.1)–(7.2): the normal velocity relative to the wall is reversed, the tangential kept:
 //!   u_G = u_I − 2 [(u_I − u_B)·n] n, so that ½(u_G + u_I)·n = u_B·n;
+//! * at a corner (central symmetry, Fig. 7.3) free slip on both sides leaves only the wall's velocity:
+//!   u_G = 2 u_B − u_I;
 //! * pressure, Neumann condition (7.4)–(7.5) for a wall in translation (dn/dt = 0):
 //!   p_G = p_I + ρ_I (g − a_B)·(r_G − r_I), which for a still wall is (7.5), p_G = p_I + 2d ρ g·n.
 
@@ -12,6 +14,12 @@ use nalgebra::SVector;
 #[inline]
 pub fn free_slip_velocity<const D: usize>(u_i: &SVector<f64, D>, u_wall: &SVector<f64, D>, n: &SVector<f64, D>) -> SVector<f64, D> {
     u_i - n * (2.0 * (u_i - u_wall).dot(n))
+}
+
+/// Corner ghost velocity (central symmetry through the vertex).
+#[inline]
+pub fn point_mirror_velocity<const D: usize>(u_i: &SVector<f64, D>, u_wall: &SVector<f64, D>) -> SVector<f64, D> {
+    u_wall * 2.0 - u_i
 }
 
 /// Ghost pressure by the Neumann condition; `body` is the body-force acceleration at the wall.
