@@ -4,7 +4,10 @@
 //! each stage. Each configuration runs in a child process (`bowwave bench-one`), so its thread pool and
 //! peak resident memory are its own.
 
-use crate::cases::{self, run::{run, RunOptions}};
+use crate::cases::{
+    self,
+    run::{run, RunOptions},
+};
 use serde::{Deserialize, Serialize};
 
 /// The result of one benchmark configuration.
@@ -30,7 +33,12 @@ pub struct BenchResult {
 pub fn peak_rss_bytes() -> u64 {
     std::fs::read_to_string("/proc/self/status")
         .ok()
-        .and_then(|s| s.lines().find(|l| l.starts_with("VmHWM:")).and_then(|l| l.split_whitespace().nth(1)).and_then(|v| v.parse::<u64>().ok()))
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmHWM:"))
+                .and_then(|l| l.split_whitespace().nth(1))
+                .and_then(|v| v.parse::<u64>().ok())
+        })
         .map(|kb| kb * 1024)
         .unwrap_or(0)
 }
@@ -39,7 +47,14 @@ pub fn peak_rss_bytes() -> u64 {
 pub fn bench_one(res: f64, end_star: f64) -> anyhow::Result<BenchResult> {
     let case = cases::load("dam-break")?;
     let end = end_star * (case.scales.length / case.gravity_magnitude()).sqrt();
-    let r = run(&case, &RunOptions { res: Some(res), end_time: Some(end), ..Default::default() })?;
+    let r = run(
+        &case,
+        &RunOptions {
+            res: Some(res),
+            end_time: Some(end),
+            ..Default::default()
+        },
+    )?;
     if let Some(b) = &r.blowup {
         anyhow::bail!("benchmark run blew up: {b}");
     }
@@ -72,7 +87,15 @@ pub fn bench_cli(res: &[f64], end: f64, threads: &[usize]) -> anyhow::Result<()>
         for &n in threads {
             eprintln!("bench: dam break H/dx = {r}, {n} thread(s), to t sqrt(g/H) = {end} ...");
             let out = std::process::Command::new(&exe)
-                .args(["--threads", &n.to_string(), "bench-one", "--res", &r.to_string(), "--end", &end.to_string()])
+                .args([
+                    "--threads",
+                    &n.to_string(),
+                    "bench-one",
+                    "--res",
+                    &r.to_string(),
+                    "--end",
+                    &end.to_string(),
+                ])
                 .output()?;
             if !out.status.success() {
                 anyhow::bail!("bench-one failed: {}", String::from_utf8_lossy(&out.stderr));
@@ -84,11 +107,26 @@ pub fn bench_cli(res: &[f64], end: f64, threads: &[usize]) -> anyhow::Result<()>
     println!("| H/dx | threads | fluid particles | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for b in &results {
-        let base = results.iter().find(|o| o.res == b.res && o.threads == 1).map(|o| o.wall_seconds / b.wall_seconds).unwrap_or(f64::NAN);
+        let base = results
+            .iter()
+            .find(|o| o.res == b.res && o.threads == 1)
+            .map(|o| o.wall_seconds / b.wall_seconds)
+            .unwrap_or(f64::NAN);
         println!(
             "| {:.0} | {} | {} | {} | {:.1} | {:.3e} | {:.2} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
-            b.res, b.threads, b.fluid_particles, b.steps, b.wall_seconds, b.particle_steps_per_second, base, b.bytes_per_particle,
-            100.0 * b.share_neighbour_search, 100.0 * b.share_ghost_mirroring, 100.0 * b.share_density_gradient, 100.0 * b.share_main_loop, 100.0 * b.share_update
+            b.res,
+            b.threads,
+            b.fluid_particles,
+            b.steps,
+            b.wall_seconds,
+            b.particle_steps_per_second,
+            base,
+            b.bytes_per_particle,
+            100.0 * b.share_neighbour_search,
+            100.0 * b.share_ghost_mirroring,
+            100.0 * b.share_density_gradient,
+            100.0 * b.share_main_loop,
+            100.0 * b.share_update
         );
     }
     Ok(())

@@ -81,10 +81,20 @@ fn main() -> anyhow::Result<()> {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let cli = Cli::parse();
     if let Some(n) = cli.threads {
-        rayon::ThreadPoolBuilder::new().num_threads(n).build_global().context("setting the thread count")?;
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global()
+            .context("setting the thread count")?;
     }
     match cli.command {
-        Command::Run { case, res, out, end, no_vtk, quiet } => {
+        Command::Run {
+            case,
+            res,
+            out,
+            end,
+            no_vtk,
+            quiet,
+        } => {
             let case = cases::load(&case)?;
             let out = out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
             let code = validation::run_and_report(&case, res, end, &out, !no_vtk, !quiet)?;
@@ -110,7 +120,10 @@ fn main() -> anyhow::Result<()> {
             }
             Some(n) => match cases::builtin::builtin_text(&n) {
                 Some(t) => print!("{t}"),
-                None => anyhow::bail!("no built-in case `{n}`; built-ins: {}", cases::builtin::builtin_names().join(", ")),
+                None => anyhow::bail!(
+                    "no built-in case `{n}`; built-ins: {}",
+                    cases::builtin::builtin_names().join(", ")
+                ),
             },
         },
     }

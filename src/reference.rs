@@ -5,24 +5,60 @@ use crate::io::csv_table::Table;
 
 /// (file name, contents) of the embedded reference files.
 const FILES: &[(&str, &str)] = &[
-    ("elliptic_drop", include_str!("../data/reference/elliptic_drop_monaghan1994_A0_100_R1_DERIVED.csv")),
-    ("oscillating_drop", include_str!("../data/reference/oscillating_drop_central_force_sigma0_0p5_Omega1_DERIVED.csv")),
-    ("martin_moyce_front", include_str!("../data/reference/martin_moyce_1952_n2_2_a2.25in_front_table2_ocellaris.csv")),
-    ("marrone_p1", include_str!("../data/reference/marrone2011_deltaSPH_damBreak_P1_trixiparticles.csv")),
-    ("marrone_p2", include_str!("../data/reference/marrone2011_deltaSPH_damBreak_P2_trixiparticles.csv")),
-    ("buchner_p1", include_str!("../data/reference/buchner2002_damBreak_H600_P1_trixiparticles.csv")),
-    ("buchner_p2", include_str!("../data/reference/buchner2002_damBreak_H600_P2_trixiparticles.csv")),
+    (
+        "elliptic_drop",
+        include_str!("../data/reference/elliptic_drop_monaghan1994_A0_100_R1_DERIVED.csv"),
+    ),
+    (
+        "oscillating_drop",
+        include_str!("../data/reference/oscillating_drop_central_force_sigma0_0p5_Omega1_DERIVED.csv"),
+    ),
+    (
+        "martin_moyce_front",
+        include_str!("../data/reference/martin_moyce_1952_n2_2_a2.25in_front_table2_ocellaris.csv"),
+    ),
+    (
+        "marrone_p1",
+        include_str!("../data/reference/marrone2011_deltaSPH_damBreak_P1_trixiparticles.csv"),
+    ),
+    (
+        "marrone_p2",
+        include_str!("../data/reference/marrone2011_deltaSPH_damBreak_P2_trixiparticles.csv"),
+    ),
+    (
+        "buchner_p1",
+        include_str!("../data/reference/buchner2002_damBreak_H600_P1_trixiparticles.csv"),
+    ),
+    (
+        "buchner_p2",
+        include_str!("../data/reference/buchner2002_damBreak_H600_P2_trixiparticles.csv"),
+    ),
 ];
 
 /// Parses an embedded reference file into a table (header kept as column names).
 pub fn load(name: &str) -> Table {
-    let text = FILES.iter().find(|(n, _)| *n == name).unwrap_or_else(|| panic!("no embedded reference `{name}`")).1;
-    let mut rdr = csv::ReaderBuilder::new().comment(Some(b'#')).from_reader(text.as_bytes());
-    let cols: Vec<String> = rdr.headers().expect("embedded reference has a header").iter().map(|s| s.trim().to_string()).collect();
+    let text = FILES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .unwrap_or_else(|| panic!("no embedded reference `{name}`"))
+        .1;
+    let mut rdr = csv::ReaderBuilder::new()
+        .comment(Some(b'#'))
+        .from_reader(text.as_bytes());
+    let cols: Vec<String> = rdr
+        .headers()
+        .expect("embedded reference has a header")
+        .iter()
+        .map(|s| s.trim().to_string())
+        .collect();
     let mut t = Table::new(cols);
     for rec in rdr.records() {
         let rec = rec.expect("embedded reference parses");
-        t.push(rec.iter().map(|s| s.trim().parse::<f64>().unwrap_or(f64::NAN)).collect());
+        t.push(
+            rec.iter()
+                .map(|s| s.trim().parse::<f64>().unwrap_or(f64::NAN))
+                .collect(),
+        );
     }
     t
 }
@@ -34,7 +70,8 @@ pub fn col(t: &Table, k: usize) -> Vec<f64> {
 
 /// Column by name.
 pub fn named(t: &Table, name: &str) -> Vec<f64> {
-    t.column(name).unwrap_or_else(|| panic!("reference column `{name}` missing"))
+    t.column(name)
+        .unwrap_or_else(|| panic!("reference column `{name}` missing"))
 }
 
 /// Linear interpolation of (xs, ys) at x; `None` outside the range.
@@ -47,7 +84,11 @@ pub fn interp(xs: &[f64], ys: &[f64], x: f64) -> Option<f64> {
         return Some(ys[0]);
     }
     let (x0, x1, y0, y1) = (xs[k - 1], xs[k], ys[k - 1], ys[k]);
-    Some(if x1 > x0 { y0 + (y1 - y0) * (x - x0) / (x1 - x0) } else { y1 })
+    Some(if x1 > x0 {
+        y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    } else {
+        y1
+    })
 }
 
 #[cfg(test)]
@@ -59,7 +100,10 @@ mod tests {
         for (n, _) in FILES {
             let t = load(n);
             assert!(t.rows.len() > 5, "{n}");
-            assert!(t.rows.iter().all(|r| r.iter().all(|x| x.is_finite())), "{n} has non-numbers");
+            assert!(
+                t.rows.iter().all(|r| r.iter().all(|x| x.is_finite())),
+                "{n} has non-numbers"
+            );
         }
     }
 }

@@ -1,17 +1,43 @@
 //! Results are bit-identical for any thread count (gather loops, fixed neighbour order, sequential sums).
 
-use bowwave::cases::{self, run::{run, RunOptions}};
+use bowwave::cases::{
+    self,
+    run::{run, RunOptions},
+};
 
 fn positions_with_threads(n: usize) -> (Vec<u64>, Vec<u64>) {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
     pool.install(|| {
         let case = cases::load("dam-break").unwrap();
-        let r = run(&case, &RunOptions { res: Some(20.0), end_time: Some(0.25), ..Default::default() }).unwrap();
+        let r = run(
+            &case,
+            &RunOptions {
+                res: Some(20.0),
+                end_time: Some(0.25),
+                ..Default::default()
+            },
+        )
+        .unwrap();
         let f = &r.sim.fluid;
         let mut order: Vec<usize> = (0..f.len()).collect();
         order.sort_by_key(|&i| f.id[i]);
-        let bits: Vec<u64> = order.iter().flat_map(|&i| [f.pos[i].x.to_bits(), f.pos[i].y.to_bits(), f.vel[i].x.to_bits(), f.rho[i].to_bits()]).collect();
-        let series: Vec<u64> = r.series.rows.iter().flat_map(|row| row.iter().map(|x| x.to_bits())).collect();
+        let bits: Vec<u64> = order
+            .iter()
+            .flat_map(|&i| {
+                [
+                    f.pos[i].x.to_bits(),
+                    f.pos[i].y.to_bits(),
+                    f.vel[i].x.to_bits(),
+                    f.rho[i].to_bits(),
+                ]
+            })
+            .collect();
+        let series: Vec<u64> = r
+            .series
+            .rows
+            .iter()
+            .flat_map(|row| row.iter().map(|x| x.to_bits()))
+            .collect();
         (bits, series)
     })
 }

@@ -16,7 +16,11 @@ pub enum CaseError {
     #[error("{file}: {message}")]
     Syntax { file: String, message: String },
     #[error("{file}: field `{field}`: expected {expected}")]
-    Field { file: String, field: String, expected: String },
+    Field {
+        file: String,
+        field: String,
+        expected: String,
+    },
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -118,9 +122,14 @@ impl Default for Numerics {
 #[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
 pub enum BodyForceSpec {
     /// Uniform gravity g (m/s²).
-    Gravity { g: Vec<f64> },
+    Gravity {
+        g: Vec<f64>,
+    },
     /// Central force −Ω² (x − centre), Ω in 1/s.
-    Central { omega: f64, centre: Vec<f64> },
+    Central {
+        omega: f64,
+        centre: Vec<f64>,
+    },
     None,
 }
 
@@ -231,7 +240,10 @@ pub struct Output {
 impl CaseFile {
     /// Parses and checks a case from TOML text; `file` names it in errors.
     pub fn parse(text: &str, file: &str) -> Result<Self, CaseError> {
-        let case: CaseFile = toml::from_str(text).map_err(|e| CaseError::Syntax { file: file.to_string(), message: e.to_string() })?;
+        let case: CaseFile = toml::from_str(text).map_err(|e| CaseError::Syntax {
+            file: file.to_string(),
+            message: e.to_string(),
+        })?;
         case.check(file)?;
         Ok(case)
     }
@@ -239,15 +251,25 @@ impl CaseFile {
     /// Reads a case file from disk.
     pub fn read(path: &std::path::Path) -> Result<Self, CaseError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| CaseError::Io { file: file.clone(), source })?;
+        let text = std::fs::read_to_string(path).map_err(|source| CaseError::Io {
+            file: file.clone(),
+            source,
+        })?;
         Self::parse(&text, &file)
     }
 
     fn check(&self, file: &str) -> Result<(), CaseError> {
-        let err = |field: &str, expected: &str| CaseError::Field { file: file.into(), field: field.into(), expected: expected.into() };
+        let err = |field: &str, expected: &str| CaseError::Field {
+            file: file.into(),
+            field: field.into(),
+            expected: expected.into(),
+        };
         let d = self.dimension;
         if d != 2 {
-            return Err(err("dimension", "2 (case files describe 2D runs; 3D comes with the comparison mode)"));
+            return Err(err(
+                "dimension",
+                "2 (case files describe 2D runs; 3D comes with the comparison mode)",
+            ));
         }
         let pos = |x: f64| x.is_finite() && x > 0.0;
         let vec_ok = |v: &Vec<f64>| v.len() == d && v.iter().all(|x| x.is_finite());
@@ -255,7 +277,10 @@ impl CaseFile {
             return Err(err("scales.length", "a positive length in metres"));
         }
         if !pos(self.scales.resolution) {
-            return Err(err("scales.resolution", "a positive number of particles per reference length"));
+            return Err(err(
+                "scales.resolution",
+                "a positive number of particles per reference length",
+            ));
         }
         if !pos(self.fluid.rho0) {
             return Err(err("fluid.rho0", "a positive density in kg/m³"));
@@ -263,7 +288,12 @@ impl CaseFile {
         match (self.fluid.c0, self.fluid.c0_over_sqrt_g_length) {
             (Some(c), None) | (None, Some(c)) if pos(c) => {}
             (Some(_), Some(_)) => return Err(err("fluid.c0", "either `c0` or `c0_over_sqrt_g_length`, not both")),
-            _ => return Err(err("fluid.c0", "a positive speed of sound: `c0` (m/s) or `c0_over_sqrt_g_length`")),
+            _ => {
+                return Err(err(
+                    "fluid.c0",
+                    "a positive speed of sound: `c0` (m/s) or `c0_over_sqrt_g_length`",
+                ))
+            }
         }
         if let Some(r) = self.numerics.h_over_dx {
             if !(r.is_finite() && (0.5..=4.0).contains(&r)) {
@@ -282,24 +312,43 @@ impl CaseFile {
             Viscosity::Artificial { alpha } if !(alpha.is_finite() && alpha >= 0.0) => {
                 return Err(err("numerics.viscosity.alpha", "a non-negative α"))
             }
-            Viscosity::Physical { nu } if !(nu.is_finite() && nu >= 0.0) => return Err(err("numerics.viscosity.nu", "a non-negative ν in m²/s")),
+            Viscosity::Physical { nu } if !(nu.is_finite() && nu >= 0.0) => {
+                return Err(err("numerics.viscosity.nu", "a non-negative ν in m²/s"))
+            }
             _ => {}
         }
         match &self.body_force {
-            BodyForceSpec::Gravity { g } if !vec_ok(g) => return Err(err("body_force.g", "a 2-component acceleration in m/s²")),
+            BodyForceSpec::Gravity { g } if !vec_ok(g) => {
+                return Err(err("body_force.g", "a 2-component acceleration in m/s²"))
+            }
             BodyForceSpec::Central { omega, centre } if !(omega.is_finite() && vec_ok(centre)) => {
-                return Err(err("body_force", "a finite `omega` (1/s) and a 2-component `centre` (m)"))
+                return Err(err(
+                    "body_force",
+                    "a finite `omega` (1/s) and a 2-component `centre` (m)",
+                ))
             }
             _ => {}
         }
-        if !vec_ok(&self.domain.min) || !vec_ok(&self.domain.max) || (0..d).any(|k| self.domain.min[k] >= self.domain.max[k]) {
-            return Err(err("domain", "`min` and `max` as 2-component points with min < max (m)"));
+        if !vec_ok(&self.domain.min)
+            || !vec_ok(&self.domain.max)
+            || (0..d).any(|k| self.domain.min[k] >= self.domain.max[k])
+        {
+            return Err(err(
+                "domain",
+                "`min` and `max` as 2-component points with min < max (m)",
+            ));
         }
         for (k, w) in self.walls.iter().enumerate() {
             if w.points.len() < 2 || !w.points.iter().all(vec_ok) {
-                return Err(err(&format!("walls[{k}].points"), "at least two 2-component points (m)"));
+                return Err(err(
+                    &format!("walls[{k}].points"),
+                    "at least two 2-component points (m)",
+                ));
             }
-            if w.points.windows(2).any(|p| (p[0][0] - p[1][0]).hypot(p[0][1] - p[1][1]) == 0.0) {
+            if w.points
+                .windows(2)
+                .any(|p| (p[0][0] - p[1][0]).hypot(p[0][1] - p[1][1]) == 0.0)
+            {
                 return Err(err(&format!("walls[{k}].points"), "no repeated consecutive points"));
             }
             if let Some(v) = &w.velocity {
@@ -313,15 +362,33 @@ impl CaseFile {
         }
         for (k, b) in self.blocks.iter().enumerate() {
             let (vel, grad) = match b {
-                BlockSpec::Rectangle { min, max, velocity, velocity_gradient, .. } => {
+                BlockSpec::Rectangle {
+                    min,
+                    max,
+                    velocity,
+                    velocity_gradient,
+                    ..
+                } => {
                     if !vec_ok(min) || !vec_ok(max) || (0..d).any(|i| min[i] >= max[i]) {
-                        return Err(err(&format!("blocks[{k}]"), "`min` < `max`, 2-component points in metres"));
+                        return Err(err(
+                            &format!("blocks[{k}]"),
+                            "`min` < `max`, 2-component points in metres",
+                        ));
                     }
                     (velocity, velocity_gradient)
                 }
-                BlockSpec::Disc { centre, radius, velocity, velocity_gradient, .. } => {
+                BlockSpec::Disc {
+                    centre,
+                    radius,
+                    velocity,
+                    velocity_gradient,
+                    ..
+                } => {
                     if !vec_ok(centre) || !pos(*radius) {
-                        return Err(err(&format!("blocks[{k}]"), "a 2-component `centre` and a positive `radius` (m)"));
+                        return Err(err(
+                            &format!("blocks[{k}]"),
+                            "a 2-component `centre` and a positive `radius` (m)",
+                        ));
                     }
                     (velocity, velocity_gradient)
                 }
@@ -333,16 +400,28 @@ impl CaseFile {
             }
             if let Some(g) = grad {
                 if g.len() != d || !g.iter().all(vec_ok) {
-                    return Err(err(&format!("blocks[{k}].velocity_gradient"), "a 2×2 matrix [[a, b], [c, d]] in 1/s"));
+                    return Err(err(
+                        &format!("blocks[{k}].velocity_gradient"),
+                        "a 2×2 matrix [[a, b], [c, d]] in 1/s",
+                    ));
                 }
             }
         }
         for (k, p) in self.probes.pressure.iter().enumerate() {
-            if !vec_ok(&p.position) || !vec_ok(&p.direction) || (p.direction[0].hypot(p.direction[1]) - 1.0).abs() > 1e-6 {
-                return Err(err(&format!("probes.pressure[{k}]"), "a 2-component `position` (m) and a unit `direction`"));
+            if !vec_ok(&p.position)
+                || !vec_ok(&p.direction)
+                || (p.direction[0].hypot(p.direction[1]) - 1.0).abs() > 1e-6
+            {
+                return Err(err(
+                    &format!("probes.pressure[{k}]"),
+                    "a 2-component `position` (m) and a unit `direction`",
+                ));
             }
             if !(p.size.is_finite() && p.size >= 0.0) {
-                return Err(err(&format!("probes.pressure[{k}].size"), "a non-negative sensor size (m)"));
+                return Err(err(
+                    &format!("probes.pressure[{k}].size"),
+                    "a non-negative sensor size (m)",
+                ));
             }
         }
         if !pos(self.output.end_time) {
@@ -352,7 +431,10 @@ impl CaseFile {
             return Err(err("output.series_every", "a positive sampling interval in seconds"));
         }
         if !(self.output.vtk_every.is_finite() && self.output.vtk_every >= 0.0) {
-            return Err(err("output.vtk_every", "a non-negative interval in seconds (0: no snapshots)"));
+            return Err(err(
+                "output.vtk_every",
+                "a non-negative interval in seconds (0: no snapshots)",
+            ));
         }
         Ok(())
     }

@@ -18,7 +18,10 @@ pub fn load(name_or_path: &str) -> Result<CaseFile, CaseError> {
         return Err(CaseError::Field {
             file: name_or_path.to_string(),
             field: "CASE".into(),
-            expected: format!("a built-in case ({}) or an existing .toml file", builtin::builtin_names().join(", ")),
+            expected: format!(
+                "a built-in case ({}) or an existing .toml file",
+                builtin::builtin_names().join(", ")
+            ),
         });
     }
     CaseFile::read(path)

@@ -5,7 +5,10 @@
 use super::case_file::CaseFile;
 use super::setup;
 use crate::io::{csv_table::Table, vtk};
-use crate::sph::{diagnostics, solver::{BlowUp, Simulation}};
+use crate::sph::{
+    diagnostics,
+    solver::{BlowUp, Simulation},
+};
 use nalgebra::Vector2;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -45,10 +48,22 @@ impl RunResult {
 
 /// Column names of the time series of a case.
 fn columns(case: &CaseFile, nwalls: usize) -> Vec<String> {
-    let mut c: Vec<String> = ["t", "t_star", "dt", "e_kinetic", "e_potential", "e_elastic", "e_mechanical", "de_mechanical_rel", "semi_axis_x", "semi_axis_y"]
-        .iter()
-        .map(|s| s.to_string())
-        .collect();
+    let mut c: Vec<String> = [
+        "t",
+        "t_star",
+        "dt",
+        "wall_corrections",
+        "e_kinetic",
+        "e_potential",
+        "e_elastic",
+        "e_mechanical",
+        "de_mechanical_rel",
+        "semi_axis_x",
+        "semi_axis_y",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
     if case.probes.front {
         c.push("front".into());
         c.push("front_star".into());
@@ -94,6 +109,7 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
         sim.time,
         sim.time / s.t_scale,
         sim.last_dt,
+        sim.wall_corrections as f64,
         e.kinetic,
         e.potential,
         e.elastic,
@@ -154,7 +170,11 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
         t_scale: (l / g).sqrt(),
         p_scale: case.fluid.rho0 * g * l,
         e0: e_init.mechanical(),
-        e_scale: if has_gravity { mass * g * l } else { (e_init.kinetic + e_init.elastic).abs().max(1e-300) },
+        e_scale: if has_gravity {
+            mass * g * l
+        } else {
+            (e_init.kinetic + e_init.elastic).abs().max(1e-300)
+        },
     };
     let end = opts.end_time.unwrap_or(case.output.end_time);
     let mut series = Table::new(columns(case, sim.boundaries.len()));
@@ -181,8 +201,10 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     let bar = if opts.progress {
         let b = indicatif::ProgressBar::new(1000);
         b.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} [{elapsed_precise}] {bar:40} {percent:>3}% {msg} ETA {eta}")
-                .expect("valid template"),
+            indicatif::ProgressStyle::with_template(
+                "{spinner} [{elapsed_precise}] {bar:40} {percent:>3}% {msg} ETA {eta}",
+            )
+            .expect("valid template"),
         );
         Some(b)
     } else {
@@ -233,5 +255,15 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
         }
     }
     let n_fluid = sim.n_fluid();
-    Ok(RunResult { case: case.clone(), dx, series, blowup, steps: sim.steps, n_fluid, wall_seconds, files, sim })
+    Ok(RunResult {
+        case: case.clone(),
+        dx,
+        series,
+        blowup,
+        steps: sim.steps,
+        n_fluid,
+        wall_seconds,
+        files,
+        sim,
+    })
 }

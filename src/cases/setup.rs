@@ -27,7 +27,10 @@ pub fn spacing(case: &CaseFile, res: Option<f64>) -> f64 {
 pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     let body = match &case.body_force {
         BodyForceSpec::Gravity { g } => BodyForce::Uniform(v2(g)),
-        BodyForceSpec::Central { omega, centre } => BodyForce::Central { omega: *omega, centre: v2(centre) },
+        BodyForceSpec::Central { omega, centre } => BodyForce::Central {
+            omega: *omega,
+            centre: v2(centre),
+        },
         BodyForceSpec::None => BodyForce::Uniform(V2::zeros()),
     };
     let c0 = case.c0();
@@ -35,7 +38,11 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     let n = &case.numerics;
     cfg.kernel = n.kernel;
     cfg.h = n.h_over_dx.unwrap_or(n.kernel.default_h_over_dx()) * dx;
-    cfg.eos = Eos { kind: case.fluid.eos, rho0: case.fluid.rho0, c0 };
+    cfg.eos = Eos {
+        kind: case.fluid.eos,
+        rho0: case.fluid.rho0,
+        c0,
+    };
     cfg.viscosity = n.viscosity;
     cfg.diffusion = n.density_diffusion;
     cfg.delta = n.delta;
@@ -56,7 +63,13 @@ pub fn fluid(case: &CaseFile, dx: f64, eos: &Eos, body: &BodyForce<2>) -> Fluid<
     };
     for b in &case.blocks {
         match b {
-            BlockSpec::Rectangle { min, max, pressure, velocity, velocity_gradient } => {
+            BlockSpec::Rectangle {
+                min,
+                max,
+                pressure,
+                velocity,
+                velocity_gradient,
+            } => {
                 let (lo, hi) = (v2(min), v2(max));
                 let nx = ((hi.x - lo.x) / dx).round() as usize;
                 let ny = ((hi.y - lo.y) / dx).round() as usize;
@@ -77,7 +90,13 @@ pub fn fluid(case: &CaseFile, dx: f64, eos: &Eos, body: &BodyForce<2>) -> Fluid<
                     }
                 }
             }
-            BlockSpec::Disc { centre, radius, pressure, velocity, velocity_gradient } => {
+            BlockSpec::Disc {
+                centre,
+                radius,
+                pressure,
+                velocity,
+                velocity_gradient,
+            } => {
                 let c = v2(centre);
                 let nr = (radius / dx).round().max(1.0) as usize;
                 let dr = radius / nr as f64;
@@ -124,8 +143,14 @@ pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>
                 Some(v) => RigidMotion::ConstantVelocity(v2(v)),
                 None => RigidMotion::Fixed,
             };
-            Box::new(PolylineWall::new(&w.name, w.points.iter().map(|p| v2(p)).collect(), w.fluid_side, motion, dx, support))
-                as Box<dyn Boundary<2>>
+            Box::new(PolylineWall::new(
+                &w.name,
+                w.points.iter().map(|p| v2(p)).collect(),
+                w.fluid_side,
+                motion,
+                dx,
+                support,
+            )) as Box<dyn Boundary<2>>
         })
         .collect()
 }

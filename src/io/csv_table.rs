@@ -30,7 +30,8 @@ impl Table {
         let mut w = csv::Writer::from_writer(vec![]);
         w.write_record(&self.columns).expect("write to memory");
         for r in &self.rows {
-            w.write_record(r.iter().map(|x| format!("{x:.9e}"))).expect("write to memory");
+            w.write_record(r.iter().map(|x| format!("{x:.9e}")))
+                .expect("write to memory");
         }
         w.into_inner().expect("flush to memory")
     }

@@ -48,7 +48,10 @@ pub fn line_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series: &
     {
         let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
         root.fill(&WHITE)?;
-        let pts = series.iter().flat_map(|s| s.points.iter()).filter(|p| p.0.is_finite() && p.1.is_finite());
+        let pts = series
+            .iter()
+            .flat_map(|s| s.points.iter())
+            .filter(|p| p.0.is_finite() && p.1.is_finite());
         let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
         for p in pts {
             x0 = x0.min(p.0);
@@ -81,7 +84,12 @@ pub fn line_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series: &
             .draw()?;
         for (k, s) in series.iter().enumerate() {
             let c = COLOURS[k % COLOURS.len()];
-            let data: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.0.is_finite() && p.1.is_finite()).collect();
+            let data: Vec<(f64, f64)> = s
+                .points
+                .iter()
+                .copied()
+                .filter(|p| p.0.is_finite() && p.1.is_finite())
+                .collect();
             match s.style {
                 Style::Line => {
                     chart

@@ -31,7 +31,10 @@ pub fn write_vtp(path: &Path, points: &[[f64; 3]], data: &[PointData]) -> std::i
                 }
             }
             PointData::Vector(name, v) => {
-                let _ = writeln!(s, "<DataArray type=\"Float64\" Name=\"{name}\" NumberOfComponents=\"3\" format=\"ascii\">");
+                let _ = writeln!(
+                    s,
+                    "<DataArray type=\"Float64\" Name=\"{name}\" NumberOfComponents=\"3\" format=\"ascii\">"
+                );
                 for x in v {
                     let _ = writeln!(s, "{:.8e} {:.8e} {:.8e}", x[0], x[1], x[2]);
                 }

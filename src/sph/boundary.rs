@@ -63,6 +63,12 @@ pub trait Boundary<const D: usize>: Send + Sync {
     fn moves(&self) -> bool;
     /// Writes the ghost geometry at time `t` into `out` (cleared first by the caller).
     fn ghosts(&self, t: f64, out: &mut GhostGeometry<D>);
+    /// Safeguard against wall penetration: if `x` lies on the solid side of the boundary at time `t`
+    /// (within the kernel support of the wall), move it back to the fluid side, remove its normal velocity
+    /// relative to the wall, and return true. The solver counts these corrections and reports them.
+    fn keep_out(&self, _t: f64, _x: &mut SVector<f64, D>, _u: &mut SVector<f64, D>) -> bool {
+        false
+    }
 }
 
 /// Rigid motion of a wall.

@@ -79,7 +79,11 @@ mod tests {
     #[test]
     fn density_inverts_pressure() {
         for kind in [EosKind::Linear, EosKind::Tait] {
-            let e = Eos { kind, rho0: 1000.0, c0: 30.0 };
+            let e = Eos {
+                kind,
+                rho0: 1000.0,
+                c0: 30.0,
+            };
             for rho in [990.0, 1000.0, 1013.0] {
                 assert!((e.density(e.pressure(rho)) - rho).abs() < 1e-9);
             }
@@ -89,13 +93,19 @@ mod tests {
     #[test]
     fn elastic_energy_is_integral_of_p_over_rho_squared() {
         for kind in [EosKind::Linear, EosKind::Tait] {
-            let e = Eos { kind, rho0: 1000.0, c0: 30.0 };
+            let e = Eos {
+                kind,
+                rho0: 1000.0,
+                c0: 30.0,
+            };
             let (a, b, n) = (1000.0, 1020.0, 2000);
             let d = (b - a) / n as f64;
-            let s: f64 = (0..n).map(|k| {
-                let r = a + (k as f64 + 0.5) * d;
-                e.pressure(r) / (r * r) * d
-            }).sum();
+            let s: f64 = (0..n)
+                .map(|k| {
+                    let r = a + (k as f64 + 0.5) * d;
+                    e.pressure(r) / (r * r) * d
+                })
+                .sum();
             assert!((s - e.elastic_energy(b)).abs() < 1e-6 * s.abs());
         }
     }

@@ -128,9 +128,7 @@ impl<const D: usize> Kernel<D> {
             return 0.0;
         }
         match self.kind {
-            KernelKind::RenormalizedGaussian => {
-                -2.0 * r * self.inv_h2 * self.norm * (-(r * r) * self.inv_h2).exp()
-            }
+            KernelKind::RenormalizedGaussian => -2.0 * r * self.inv_h2 * self.norm * (-(r * r) * self.inv_h2).exp(),
             KernelKind::WendlandC2 => {
                 let q = r / self.h;
                 let t = 1.0 - 0.5 * q;

@@ -50,55 +50,96 @@ impl<const D: usize> MlsWeights<D> {
     }
 }
 
-/// Builds the MLS weights at `x` from neighbours given as (index, x − x_j, W_j V_j).
-pub fn mls_weights<const D: usize>(h: f64, neighbours: &[(usize, SVector<f64, D>, f64)]) -> MlsWeights<D> {
-    assert!(D <= 3);
-    let mut out = MlsWeights { first_order: false, ..Default::default() };
-    if neighbours.is_empty() {
-        return out;
+/// A fitted interpolant at one point: weights w_j and gradient weights g_j as functions of (x − x_j, W_j V_j).
+#[derive(Clone, Copy, Debug)]
+pub enum MlsFit {
+    /// First order: M⁻¹ (4×4, padded) and h.
+    FirstOrder { inv: Matrix4<f64>, h: f64 },
+    /// Shepard: 1/Σ W_j V_j.
+    Shepard { inv_sum: f64 },
+    /// No neighbour.
+    Empty,
+}
+
+#[inline]
+fn basis<const D: usize>(dx: &SVector<f64, D>, h: f64) -> Vector4<f64> {
+    let mut b = Vector4::new(1.0, 0.0, 0.0, 0.0);
+    for d in 0..D {
+        b[d + 1] = -dx[d] / h; // (x_j − x)/h
     }
-    let b_of = |dx: &SVector<f64, D>| {
-        let mut b = Vector4::new(1.0, 0.0, 0.0, 0.0);
-        for d in 0..D {
-            b[d + 1] = -dx[d] / h; // (x_j − x)/h
+    b
+}
+
+impl MlsFit {
+    /// (w_j, g_j) of a neighbour with `dx` = x − x_j and `wv` = W_j V_j.
+    #[inline]
+    pub fn weight<const D: usize>(&self, dx: &SVector<f64, D>, wv: f64) -> (f64, SVector<f64, D>) {
+        match self {
+            MlsFit::FirstOrder { inv, h } => {
+                let c = inv * basis(dx, *h) * wv;
+                let mut g = SVector::<f64, D>::zeros();
+                for d in 0..D {
+                    g[d] = c[d + 1] / h;
+                }
+                (c[0], g)
+            }
+            MlsFit::Shepard { inv_sum } => (wv * inv_sum, SVector::zeros()),
+            MlsFit::Empty => (0.0, SVector::zeros()),
         }
-        b
-    };
+    }
+
+    pub fn is_first_order(&self) -> bool {
+        matches!(self, MlsFit::FirstOrder { .. })
+    }
+}
+
+/// Fits the MLS interpolant at a point from neighbours given as (index, x − x_j, W_j V_j).
+pub fn mls_fit<const D: usize>(h: f64, neighbours: &[(usize, SVector<f64, D>, f64)]) -> MlsFit {
+    assert!(D <= 3);
+    if neighbours.is_empty() {
+        return MlsFit::Empty;
+    }
     let mut m = Matrix4::<f64>::zeros();
+    let mut sum = 0.0;
     for (_, dx, wv) in neighbours {
-        let b = b_of(dx);
+        let b = basis(dx, h);
         m += b * b.transpose() * *wv;
+        sum += wv;
     }
     for d in D + 1..4 {
         m[(d, d)] = 1.0;
     }
+    let shepard = if sum > 0.0 {
+        MlsFit::Shepard { inv_sum: 1.0 / sum }
+    } else {
+        MlsFit::Empty
+    };
     let m00 = m[(0, 0)];
-    let det = m.determinant();
-    let inv = if m00 > 0.0 && det > 1e-3 * m00.powi(D as i32 + 1) { m.try_inverse() } else { None };
-    out.neighbours = neighbours.iter().map(|n| n.0).collect();
-    if let Some(inv) = inv {
-        for (_, dx, wv) in neighbours {
-            let b = b_of(dx);
-            let c = inv * b * *wv;
-            out.value.push(c[0]);
-            let mut g = SVector::<f64, D>::zeros();
-            for d in 0..D {
-                g[d] = c[d + 1] / h;
-            }
-            out.gradient.push(g);
-        }
-        let lebesgue: f64 = out.value.iter().map(|w| w.abs()).sum();
-        if lebesgue <= MAX_LEBESGUE {
-            out.first_order = true;
-            return out;
-        }
-        out.value.clear();
-        out.gradient.clear();
+    if !(m00 > 0.0 && m.determinant() > 1e-3 * m00.powi(D as i32 + 1)) {
+        return shepard;
     }
-    let s: f64 = neighbours.iter().map(|n| n.2).sum();
-    for (_, _, wv) in neighbours {
-        out.value.push(if s > 0.0 { wv / s } else { 0.0 });
-        out.gradient.push(SVector::zeros());
+    let Some(inv) = m.try_inverse() else { return shepard };
+    let fit = MlsFit::FirstOrder { inv, h };
+    let lebesgue: f64 = neighbours.iter().map(|(_, dx, wv)| fit.weight(dx, *wv).0.abs()).sum();
+    if lebesgue <= MAX_LEBESGUE {
+        fit
+    } else {
+        shepard
+    }
+}
+
+/// Builds the MLS weights at a point from neighbours given as (index, x − x_j, W_j V_j).
+pub fn mls_weights<const D: usize>(h: f64, neighbours: &[(usize, SVector<f64, D>, f64)]) -> MlsWeights<D> {
+    let fit = mls_fit(h, neighbours);
+    let mut out = MlsWeights {
+        first_order: fit.is_first_order(),
+        ..Default::default()
+    };
+    for (j, dx, wv) in neighbours {
+        let (w, g) = fit.weight(dx, *wv);
+        out.neighbours.push(*j);
+        out.value.push(w);
+        out.gradient.push(g);
     }
     out
 }
@@ -151,9 +192,18 @@ mod tests {
         // Three nearly colinear particles far to one side of the point: a first-order fit would extrapolate.
         let h = 0.1;
         let k = Kernel::<2>::new(KernelKind::RenormalizedGaussian, h);
-        let pts = [SVector::from([0.20, 0.00]), SVector::from([0.22, 0.01]), SVector::from([0.24, 0.00]), SVector::from([0.21, 0.03])];
+        let pts = [
+            SVector::from([0.20, 0.00]),
+            SVector::from([0.22, 0.01]),
+            SVector::from([0.24, 0.00]),
+            SVector::from([0.21, 0.03]),
+        ];
         let x = SVector::from([0.0, 0.0]);
-        let nb: Vec<_> = pts.iter().enumerate().map(|(j, p)| (j, x - p, k.w((x - p).norm()) * 0.01 * 0.01)).collect();
+        let nb: Vec<_> = pts
+            .iter()
+            .enumerate()
+            .map(|(j, p)| (j, x - p, k.w((x - p).norm()) * 0.01 * 0.01))
+            .collect();
         let w = mls_weights::<2>(h, &nb);
         assert!(!w.first_order);
         let vals = [1.0, 2.0, 3.0, 4.0];

@@ -19,7 +19,14 @@ pub struct CellList<const D: usize> {
 
 impl<const D: usize> Default for CellList<D> {
     fn default() -> Self {
-        CellList { origin: [0.0; D], cell: 1.0, dims: [1; D], start: vec![0, 0], sorted: vec![], offsets: neighbour_offsets::<D>() }
+        CellList {
+            origin: [0.0; D],
+            cell: 1.0,
+            dims: [1; D],
+            start: vec![0, 0],
+            sorted: vec![],
+            offsets: neighbour_offsets::<D>(),
+        }
     }
 }
 
@@ -159,7 +166,9 @@ mod tests {
     #[test]
     fn cell_list_matches_brute_force_in_2d_and_3d() {
         let mut seed = 7u64;
-        let pts2: Vec<SVector<f64, 2>> = (0..800).map(|_| SVector::from([lcg(&mut seed) * 3.0, lcg(&mut seed)])).collect();
+        let pts2: Vec<SVector<f64, 2>> = (0..800)
+            .map(|_| SVector::from([lcg(&mut seed) * 3.0, lcg(&mut seed)]))
+            .collect();
         let list = CellList::build(&pts2, 0.13);
         for x in pts2.iter().step_by(7) {
             let mut got = vec![];
@@ -188,7 +197,9 @@ mod tests {
     #[test]
     fn order_is_a_permutation_grouped_by_cell() {
         let mut seed = 3u64;
-        let pts: Vec<SVector<f64, 2>> = (0..300).map(|_| SVector::from([lcg(&mut seed), lcg(&mut seed)])).collect();
+        let pts: Vec<SVector<f64, 2>> = (0..300)
+            .map(|_| SVector::from([lcg(&mut seed), lcg(&mut seed)]))
+            .collect();
         let list = CellList::build(&pts, 0.1);
         let mut o: Vec<u32> = list.order().to_vec();
         let keys: Vec<usize> = o.iter().map(|&i| list.cell_of(&pts[i as usize])).collect();

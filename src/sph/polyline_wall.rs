@@ -30,6 +30,8 @@ pub struct PolylineWall {
     pub points: Vec<V2>,
     pub fluid_side: FluidSide,
     pub motion: RigidMotion<2>,
+    ds: f64,
+    support: f64,
     /// Ghost geometry at t = 0.
     base: GhostGeometry<2>,
 }
@@ -39,16 +41,30 @@ const CORNER_TURN: f64 = 30.0 * std::f64::consts::PI / 180.0;
 
 impl PolylineWall {
     /// Builds the wall and its ghost layers for particle spacing `ds` (m) and kernel support `support` (m).
-    pub fn new(name: &str, points: Vec<V2>, fluid_side: FluidSide, motion: RigidMotion<2>, ds: f64, support: f64) -> Self {
+    pub fn new(
+        name: &str,
+        points: Vec<V2>,
+        fluid_side: FluidSide,
+        motion: RigidMotion<2>,
+        ds: f64,
+        support: f64,
+    ) -> Self {
         let mut wall = PolylineWall {
             name: name.to_string(),
             points,
             fluid_side,
             motion,
+            ds,
+            support,
             base: GhostGeometry::default(),
         };
         wall.base = ghost_layers(&wall.points, fluid_side, ds, support);
         wall
+    }
+
+    /// Particle spacing and kernel support used for the ghosts (m).
+    pub fn spacing(&self) -> (f64, f64) {
+        (self.ds, self.support)
     }
 
     /// Ghost geometry at t = 0 (for tests and plots).
@@ -75,6 +91,58 @@ impl Boundary<2> for PolylineWall {
         out.volume.extend_from_slice(&self.base.volume);
         out.mirror.extend_from_slice(&self.base.mirror);
     }
+
+    fn keep_out(&self, t: f64, x: &mut V2, u: &mut V2) -> bool {
+        let d = self.motion.displacement(t);
+        let local = *x - d;
+        let Some((foot, n)) = solid_side(&self.points, self.fluid_side, &local, self.support) else {
+            return false;
+        };
+        let depth = (local - foot).dot(&n);
+        *x = foot + d - n * (0.5 * self.ds).min(depth.max(0.0) + 0.25 * self.ds);
+        let rel = (*u - self.motion.velocity(t)).dot(&n);
+        if rel > 0.0 {
+            *u -= n * rel;
+        }
+        true
+    }
+}
+
+/// If `x` is on the solid side of the polyline within `band` of it, its foot on the wall and the wall's
+/// solid-side normal there. Points whose nearest wall point is a free end of the polyline are never inside
+/// (they went round the wall's end, not through it).
+pub fn solid_side(points: &[V2], side: FluidSide, x: &V2, band: f64) -> Option<(V2, V2)> {
+    let normals = solid_normals(points, side);
+    let mut best: Option<(f64, usize, f64)> = None; // (distance², segment, parameter)
+    for (k, w) in points.windows(2).enumerate() {
+        let ab = w[1] - w[0];
+        let l2 = ab.norm_squared();
+        let t = ((x - w[0]).dot(&ab) / l2).clamp(0.0, 1.0);
+        let d2 = (x - (w[0] + ab * t)).norm_squared();
+        if best.is_none_or(|b| d2 < b.0) {
+            best = Some((d2, k, t));
+        }
+    }
+    let (d2, k, t) = best?;
+    if d2 > band * band {
+        return None;
+    }
+    let nseg = points.len() - 1;
+    let foot = points[k] + (points[k + 1] - points[k]) * t;
+    let n = if t <= 0.0 {
+        if k == 0 {
+            return None;
+        }
+        (normals[k - 1] + normals[k]).normalize()
+    } else if t >= 1.0 {
+        if k + 1 == nseg {
+            return None;
+        }
+        (normals[k] + normals[k + 1]).normalize()
+    } else {
+        normals[k]
+    };
+    ((x - foot).dot(&n) > 0.0).then_some((foot, n))
 }
 
 /// Unit normal of each segment pointing away from the fluid (into the solid).
@@ -177,7 +245,11 @@ pub fn nearest_point(points: &[V2], x: &V2) -> V2 {
         let (a, b) = (w[0], w[1]);
         let ab = b - a;
         let l2 = ab.norm_squared();
-        let t = if l2 > 0.0 { ((x - a).dot(&ab) / l2).clamp(0.0, 1.0) } else { 0.0 };
+        let t = if l2 > 0.0 {
+            ((x - a).dot(&ab) / l2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
         let p = a + ab * t;
         let d2 = (x - p).norm_squared();
         if d2 < best_d2 {
@@ -201,7 +273,9 @@ pub fn ghost_layers(points: &[V2], side: FluidSide, ds: f64, support: f64) -> Gh
         let q = offset_polyline(points, &normals, d);
         for p in sample_offset(&q, &normals, ds) {
             let foot = nearest_point(points, &p);
-            let at_vertex = points[1..points.len() - 1].iter().any(|v| (v - foot).norm() < 1e-9 * ds);
+            let at_vertex = points[1..points.len() - 1]
+                .iter()
+                .any(|v| (v - foot).norm() < 1e-9 * ds);
             g.mirror.push(if at_vertex { Mirror::Point } else { Mirror::Plane });
             g.pos.push(p);
             g.interp.push(foot * 2.0 - p);
@@ -221,13 +295,21 @@ mod tests {
     #[test]
     fn tank_ghosts_lie_on_the_fluid_lattice_and_mirror_into_the_fluid() {
         let dx = 0.1;
-        let pts = vec![V2::new(0.0, 1.0), V2::new(0.0, 0.0), V2::new(2.0, 0.0), V2::new(2.0, 1.0)];
+        let pts = vec![
+            V2::new(0.0, 1.0),
+            V2::new(0.0, 0.0),
+            V2::new(2.0, 0.0),
+            V2::new(2.0, 1.0),
+        ];
         let g = ghost_layers(&pts, FluidSide::Left, dx, 0.399);
         // 4 layers; every ghost sits at ((i + ½) dx, (j + ½) dx), outside the tank, within the support.
         for (p, q) in g.pos.iter().zip(&g.interp) {
             let fx = p.x / dx - 0.5;
             let fy = p.y / dx - 0.5;
-            assert!((fx - fx.round()).abs() < 1e-9 && (fy - fy.round()).abs() < 1e-9, "{p:?} off lattice");
+            assert!(
+                (fx - fx.round()).abs() < 1e-9 && (fy - fy.round()).abs() < 1e-9,
+                "{p:?} off lattice"
+            );
             assert!(p.x < 0.0 || p.x > 2.0 || p.y < 0.0, "{p:?} inside the fluid");
             assert!(q.x > 0.0 && q.x < 2.0 && q.y > 0.0, "mirror {q:?} not in the fluid");
         }
@@ -238,11 +320,21 @@ mod tests {
             }
         }
         // Corner block: the 4×4 ghosts below-left of the origin mirror through the vertex (central symmetry).
-        let corner: Vec<_> = g.pos.iter().zip(&g.interp).filter(|(p, _)| p.x < 0.0 && p.y < 0.0).collect();
+        let corner: Vec<_> = g
+            .pos
+            .iter()
+            .zip(&g.interp)
+            .filter(|(p, _)| p.x < 0.0 && p.y < 0.0)
+            .collect();
         assert_eq!(corner.len(), 16);
         for (p, q) in corner {
             assert!((p + q).norm() < 1e-12);
         }
+        // A point inside the floor is detected; one past the free top end of a side is not.
+        assert!(solid_side(&pts, FluidSide::Left, &V2::new(1.0, -0.02), 0.4).is_some());
+        assert!(solid_side(&pts, FluidSide::Left, &V2::new(1.0, 0.02), 0.4).is_none());
+        assert!(solid_side(&pts, FluidSide::Left, &V2::new(-0.05, 1.1), 0.4).is_none());
+        assert!(solid_side(&pts, FluidSide::Left, &V2::new(2.01, -0.01), 0.4).is_some());
         let points = g.mirror.iter().filter(|m| **m == Mirror::Point).count();
         assert_eq!(points, 32, "the two 4x4 corner blocks mirror through the vertices");
         // Count: bottom 4 layers × 20 + two sides × 4 layers × 10 + two corners × 16.

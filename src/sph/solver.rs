@@ -12,14 +12,19 @@
 
 use super::body_force::BodyForce;
 use super::boundary::{Boundary, GhostGeometry, Mirror};
-use super::equations::{
-    continuity, density_diffusion::{self, DensityDiffusion}, ghost_conditions, pressure_force,
-    renormalization::RenormalizedGradient, timestep, viscosity::{self, Viscosity}, wall_force,
-};
 use super::eos::Eos;
+use super::equations::{
+    continuity,
+    density_diffusion::{self, DensityDiffusion},
+    ghost_conditions, pressure_force,
+    renormalization::RenormalizedGradient,
+    timestep,
+    viscosity::{self, Viscosity},
+    wall_force,
+};
 use super::integrator::Integrator;
 use super::kernel::{Kernel, KernelKind};
-use super::mls::{mls_weights, shepard_weights};
+use super::mls::{mls_fit, MlsFit};
 use super::neighbours::CellList;
 use super::particles::Fluid;
 use nalgebra::SVector;
@@ -70,7 +75,11 @@ impl<const D: usize> SolverConfig<D> {
             kernel,
             dx,
             h,
-            eos: Eos { kind: Default::default(), rho0, c0 },
+            eos: Eos {
+                kind: Default::default(),
+                rho0,
+                c0,
+            },
             viscosity: Viscosity::default(),
             diffusion: DensityDiffusion::DeltaSph,
             delta: 0.1,
@@ -94,7 +103,13 @@ pub struct GhostState<const D: usize> {
     pub rho: Vec<f64>,
     pub p: Vec<f64>,
     pub grad_rho: Vec<SVector<f64, D>>,
+    /// Volume each ghost takes part with: its lattice volume, or 0 when no fluid particle is within the
+    /// kernel support of its mirror point (the mirror image of empty space is empty).
+    pub volume: Vec<f64>,
 }
+
+/// (velocity, density, pressure, density gradient, active volume) assigned to one ghost.
+type GhostValues<const D: usize> = (SVector<f64, D>, f64, f64, SVector<f64, D>, f64);
 
 /// Why a run stopped early.
 #[derive(Clone, Debug, PartialEq)]
@@ -119,15 +134,19 @@ impl std::fmt::Display for BlowUp {
         match &self.reason {
             BlowUpReason::NotFinite => write!(f, "non-finite position, velocity or density")?,
             BlowUpReason::LeftDomain => write!(f, "a particle left the domain")?,
-            BlowUpReason::TimeStepCollapse { dt, floor } => {
-                write!(f, "time step collapsed to {dt:.3e} s (floor {floor:.3e} s): velocities or accelerations exploded")?
-            }
+            BlowUpReason::TimeStepCollapse { dt, floor } => write!(
+                f,
+                "time step collapsed to {dt:.3e} s (floor {floor:.3e} s): velocities or accelerations exploded"
+            )?,
         }
         write!(f, " at t = {:.6} s, step {}", self.time, self.step)?;
         if let Some((id, p)) = &self.particle {
             write!(f, " (particle {id} at {p:?})")?;
         }
-        write!(f, "; the state before that step is kept. Try a smaller CFL, a larger α or δ, or check the case set-up")
+        write!(
+            f,
+            "; the state before that step is kept. Try a smaller CFL, a larger α or δ, or check the case set-up"
+        )
     }
 }
 
@@ -175,10 +194,14 @@ pub struct Simulation<const D: usize> {
     pub steps: u64,
     pub last_dt: f64,
     pub timings: StageTimings,
+    /// Number of times a particle was put back out of a wall ([`Boundary::keep_out`]) since the start.
+    pub wall_corrections: u64,
     cells: CellList<D>,
     all_pos: Vec<SVector<f64, D>>,
     pressure: Vec<f64>,
     grad_rho: Vec<SVector<f64, D>>,
+    /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
+    neighbours: Vec<Vec<u32>>,
     ghosts_static: bool,
 }
 
@@ -195,10 +218,12 @@ impl<const D: usize> Simulation<D> {
             steps: 0,
             last_dt: 0.0,
             timings: StageTimings::default(),
+            wall_corrections: 0,
             cells: CellList::default(),
             all_pos: vec![],
             pressure: vec![],
             grad_rho: vec![],
+            neighbours: vec![],
             ghosts_static: false,
         };
         sim.place_ghosts(0.0);
@@ -219,7 +244,7 @@ impl<const D: usize> Simulation<D> {
         for (k, b) in self.boundaries.iter().enumerate() {
             tmp.clear();
             b.ghosts(t, &mut tmp);
-            g.owner.extend(std::iter::repeat(k).take(tmp.len()));
+            g.owner.extend(std::iter::repeat_n(k, tmp.len()));
             g.geom.append(&tmp);
         }
     }
@@ -254,44 +279,62 @@ impl<const D: usize> Simulation<D> {
         let body = self.cfg.body_force;
         let geom = &self.ghosts.geom;
         let shepard = self.cfg.ghost_interpolation == GhostInterpolation::Shepard;
-        let values: Vec<(SVector<f64, D>, f64, f64, SVector<f64, D>)> = (0..geom.len())
+        let values: Vec<GhostValues<D>> = (0..geom.len())
             .into_par_iter()
-            .map(|g| {
-                let xi = geom.interp[g];
-                let mut nb = Vec::with_capacity(64);
-                cells.for_each_within(all_pos, &xi, kernel.support, |j, rij, r| {
-                    if j < nf {
-                        nb.push((j, rij, kernel.w(r) * mass[j] / rho[j]));
+            .map_init(
+                || Vec::with_capacity(64),
+                |nb: &mut Vec<(usize, SVector<f64, D>, f64)>, g| {
+                    let xi = geom.interp[g];
+                    nb.clear();
+                    cells.for_each_within(all_pos, &xi, kernel.support, |j, rij, r| {
+                        if j < nf {
+                            nb.push((j, rij, kernel.w(r) * mass[j] / rho[j]));
+                        }
+                    });
+                    let wall_vel = geom.wall_vel[g];
+                    if nb.is_empty() {
+                        // The mirror image of empty space is empty: this ghost takes no part.
+                        return (wall_vel, eos.rho0, 0.0, SVector::zeros(), 0.0);
                     }
-                });
-                let wall_vel = geom.wall_vel[g];
-                if nb.is_empty() {
-                    return (wall_vel, eos.rho0, 0.0, SVector::zeros());
-                }
-                let w = if shepard { shepard_weights(&nb) } else { mls_weights(kernel.h, &nb) };
-                let p_i = w.interpolate(|j| pressure[j]);
-                let rho_i = w.interpolate(|j| rho[j]);
-                let u_i = w.interpolate_vec(|j| vel[j]);
-                let grad_i = w.gradient_of(|j| rho[j]);
-                let r_gi = geom.pos[g] - xi;
-                let dist = r_gi.norm();
-                let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
-                let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
-                let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
-                let u_g = match geom.mirror[g] {
-                    Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
-                    Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
-                };
-                let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
-                let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
-                (u_g, eos.density(p_g), p_g, grad_g)
-            })
+                    let fit = if shepard { MlsFit::Empty } else { mls_fit(kernel.h, nb) };
+                    let fit = match fit {
+                        MlsFit::Empty => {
+                            let s: f64 = nb.iter().map(|n| n.2).sum();
+                            MlsFit::Shepard { inv_sum: 1.0 / s }
+                        }
+                        f => f,
+                    };
+                    let (mut p_i, mut rho_i) = (0.0, 0.0);
+                    let mut u_i = SVector::<f64, D>::zeros();
+                    let mut grad_i = SVector::<f64, D>::zeros();
+                    for (j, dx, wv) in nb.iter() {
+                        let (w, gw) = fit.weight(dx, *wv);
+                        p_i += pressure[*j] * w;
+                        rho_i += rho[*j] * w;
+                        u_i += vel[*j] * w;
+                        grad_i += gw * rho[*j];
+                    }
+                    let r_gi = geom.pos[g] - xi;
+                    let dist = r_gi.norm();
+                    let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
+                    let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
+                    let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
+                    let u_g = match geom.mirror[g] {
+                        Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
+                        Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
+                    };
+                    let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
+                    let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
+                    (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g])
+                },
+            )
             .collect();
         let gs = &mut self.ghosts;
         gs.vel = values.iter().map(|v| v.0).collect();
         gs.rho = values.iter().map(|v| v.1).collect();
         gs.p = values.iter().map(|v| v.2).collect();
         gs.grad_rho = values.iter().map(|v| v.3).collect();
+        gs.volume = values.iter().map(|v| v.4).collect();
         self.timings.ghost_mirroring += clock.elapsed().as_secs_f64();
     }
 
@@ -309,32 +352,42 @@ impl<const D: usize> Simulation<D> {
 
         // Stage 4: renormalised density gradient, eqs. (4.19)–(4.20).
         let clock = Instant::now();
-        if cfg.diffusion.needs_gradient() {
-            self.grad_rho = (0..nf)
-                .into_par_iter()
-                .map(|i| {
-                    let mut acc = RenormalizedGradient::<D>::default();
-                    cells.for_each_within(all_pos, &pos[i], kernel.support, |j, rij, r| {
-                        if j == i {
-                            return;
-                        }
+        // The neighbour lists found here are kept for the main loop (stage 5).
+        let need_grad = cfg.diffusion.needs_gradient();
+        self.neighbours.resize_with(nf, Vec::new);
+        self.grad_rho = self
+            .neighbours
+            .par_iter_mut()
+            .enumerate()
+            .map(|(i, list)| {
+                list.clear();
+                let mut acc = RenormalizedGradient::<D>::default();
+                cells.for_each_within(all_pos, &pos[i], kernel.support, |j, rij, r| {
+                    if j == i {
+                        return;
+                    }
+                    list.push(j as u32);
+                    if need_grad {
                         let gw = kernel.grad(&rij, r);
                         let (rho_j, v_j) = if j < nf {
                             (rho[j], mass[j] / rho[j])
                         } else {
-                            (gs.rho[j - nf], gs.geom.volume[j - nf])
+                            (gs.rho[j - nf], gs.volume[j - nf])
                         };
                         acc.add(&gw, &rij, rho_j - rho[i], v_j);
-                    });
+                    }
+                });
+                if need_grad {
                     acc.gradient()
-                })
-                .collect();
-        } else {
-            self.grad_rho = vec![SVector::zeros(); nf];
-        }
+                } else {
+                    SVector::zeros()
+                }
+            })
+            .collect();
         self.timings.density_gradient += clock.elapsed().as_secs_f64();
         let clock = Instant::now();
         let grad_rho = &self.grad_rho;
+        let neighbours = &self.neighbours;
         let pressure = &self.pressure;
         let eos = cfg.eos;
         let visc = cfg.viscosity.coefficient(D, eos.rho0, h, eos.c0);
@@ -350,16 +403,16 @@ impl<const D: usize> Simulation<D> {
                 let mut drho = 0.0;
                 let mut dvel = SVector::<f64, D>::zeros();
                 let mut max_pi = 0.0f64;
-                cells.for_each_within(all_pos, &pos[i], kernel.support, |j, rij, r| {
-                    if j == i {
-                        return;
-                    }
+                for &j in &neighbours[i] {
+                    let j = j as usize;
+                    let rij = pos[i] - all_pos[j];
+                    let r = rij.norm();
                     let gw = kernel.grad(&rij, r);
                     let (u_j, rho_j, p_j, v_j, grad_j) = if j < nf {
                         (vel[j], rho[j], pressure[j], mass[j] / rho[j], grad_rho[j])
                     } else {
                         let g = j - nf;
-                        (gs.vel[g], gs.rho[g], gs.p[g], gs.geom.volume[g], gs.grad_rho[g])
+                        (gs.vel[g], gs.rho[g], gs.p[g], gs.volume[g], gs.grad_rho[g])
                     };
                     let u_ji = u_j - u_i;
                     let r2 = r * r;
@@ -372,13 +425,18 @@ impl<const D: usize> Simulation<D> {
                     let pi = viscosity::pi_ij(&u_ji, &rij, r2, h);
                     dvel += viscosity::viscous_acceleration(visc, rho_i, pi, &gw, v_j);
                     max_pi = max_pi.max(pi.abs());
-                });
+                }
                 dvel += body.acceleration(&pos[i]);
                 let signal = timestep::signal_speed(eos.sound_speed(rho_i), u_i.norm(), h, max_pi);
                 (drho, dvel, signal)
             })
             .collect();
-        let mut rates = Rates { drho: Vec::with_capacity(nf), dvel: Vec::with_capacity(nf), max_signal: 0.0, max_accel: 0.0 };
+        let mut rates = Rates {
+            drho: Vec::with_capacity(nf),
+            dvel: Vec::with_capacity(nf),
+            max_signal: 0.0,
+            max_accel: 0.0,
+        };
         for (dr, dv, s) in out {
             rates.max_signal = rates.max_signal.max(s);
             rates.max_accel = rates.max_accel.max(dv.norm());
@@ -418,7 +476,13 @@ impl<const D: usize> Simulation<D> {
         let k1 = self.rates(t0, &pos0, &vel0, &rho0);
         let dt = timestep::time_step(self.cfg.cfl, self.kernel.h, k1.max_signal, k1.max_accel);
         if !dt.is_finite() || dt < self.cfg.dt_floor {
-            return Err(self.blow_up(BlowUpReason::TimeStepCollapse { dt, floor: self.cfg.dt_floor }, None));
+            return Err(self.blow_up(
+                BlowUpReason::TimeStepCollapse {
+                    dt,
+                    floor: self.cfg.dt_floor,
+                },
+                None,
+            ));
         }
         let axpy = |a: f64, vel_rate: &[SVector<f64, D>], k: &Rates<D>| {
             let pos: Vec<_> = pos0.iter().zip(vel_rate).map(|(p, v)| p + v * a).collect();
@@ -462,9 +526,20 @@ impl<const D: usize> Simulation<D> {
                 (pos, vel, rho)
             }
         };
+        // Wall-penetration safeguard (counted, reported in the series).
+        let (mut pos, mut vel) = (pos, vel);
+        let t1 = t0 + dt;
+        for (x, u) in pos.iter_mut().zip(vel.iter_mut()) {
+            for b in &self.boundaries {
+                if b.keep_out(t1, x, u) {
+                    self.wall_corrections += 1;
+                }
+            }
+        }
         // Checks before accepting the step.
         for i in 0..pos.len() {
-            let finite = rho[i].is_finite() && pos[i].iter().all(|x| x.is_finite()) && vel[i].iter().all(|x| x.is_finite());
+            let finite =
+                rho[i].is_finite() && pos[i].iter().all(|x| x.is_finite()) && vel[i].iter().all(|x| x.is_finite());
             if !finite {
                 return Err(self.blow_up(BlowUpReason::NotFinite, Some(i)));
             }
@@ -514,23 +589,27 @@ impl<const D: usize> Simulation<D> {
         let gs = &self.ghosts;
         let fl = &self.fluid;
         let p = &self.pressure;
-        let visc = self.cfg.viscosity.coefficient(D, self.cfg.eos.rho0, kernel.h, self.cfg.eos.c0);
+        let visc = self
+            .cfg
+            .viscosity
+            .coefficient(D, self.cfg.eos.rho0, kernel.h, self.cfg.eos.c0);
         let per_ghost: Vec<SVector<f64, D>> = (0..gs.geom.len())
             .into_par_iter()
             .map(|g| {
                 let mut f = SVector::zeros();
                 let xg = gs.geom.pos[g];
-                self.cells.for_each_within(&self.all_pos, &xg, kernel.support, |j, rgj, r| {
-                    if j >= nf {
-                        return;
-                    }
-                    let rij = -rgj; // r_i − r_g with i the fluid particle
-                    let gw = kernel.grad(&rij, r);
-                    let u_ji = gs.vel[g] - fl.vel[j];
-                    let pi = viscosity::pi_ij(&u_ji, &rij, r * r, kernel.h);
-                    let v_i = fl.mass[j] / fl.rho[j];
-                    f += wall_force::pair_force(p[j], gs.p[g], visc * pi, &gw, v_i, gs.geom.volume[g]);
-                });
+                self.cells
+                    .for_each_within(&self.all_pos, &xg, kernel.support, |j, rgj, r| {
+                        if j >= nf {
+                            return;
+                        }
+                        let rij = -rgj; // r_i − r_g with i the fluid particle
+                        let gw = kernel.grad(&rij, r);
+                        let u_ji = gs.vel[g] - fl.vel[j];
+                        let pi = viscosity::pi_ij(&u_ji, &rij, r * r, kernel.h);
+                        let v_i = fl.mass[j] / fl.rho[j];
+                        f += wall_force::pair_force(p[j], gs.p[g], visc * pi, &gw, v_i, gs.volume[g]);
+                    });
                 f
             })
             .collect();
@@ -546,16 +625,17 @@ impl<const D: usize> Simulation<D> {
     pub fn pressure_at(&self, x: &SVector<f64, D>) -> Option<f64> {
         let nf = self.fluid.len();
         let (mut s, mut w) = (0.0, 0.0);
-        self.cells.for_each_within(&self.all_pos, x, self.kernel.support, |j, _, r| {
-            let (p, v) = if j < nf {
-                (self.pressure[j], self.fluid.mass[j] / self.fluid.rho[j])
-            } else {
-                (self.ghosts.p[j - nf], self.ghosts.geom.volume[j - nf])
-            };
-            let wv = self.kernel.w(r) * v;
-            s += p * wv;
-            w += wv;
-        });
+        self.cells
+            .for_each_within(&self.all_pos, x, self.kernel.support, |j, _, r| {
+                let (p, v) = if j < nf {
+                    (self.pressure[j], self.fluid.mass[j] / self.fluid.rho[j])
+                } else {
+                    (self.ghosts.p[j - nf], self.ghosts.volume[j - nf])
+                };
+                let wv = self.kernel.w(r) * v;
+                s += p * wv;
+                w += wv;
+            });
         (w > 0.0).then(|| s / w)
     }
 
@@ -563,11 +643,12 @@ impl<const D: usize> Simulation<D> {
     pub fn fluid_neighbours_of(&self, x: &SVector<f64, D>) -> Vec<usize> {
         let nf = self.fluid.len();
         let mut v = vec![];
-        self.cells.for_each_within(&self.all_pos, x, self.kernel.support, |j, _, _| {
-            if j < nf {
-                v.push(j)
-            }
-        });
+        self.cells
+            .for_each_within(&self.all_pos, x, self.kernel.support, |j, _, _| {
+                if j < nf {
+                    v.push(j)
+                }
+            });
         v
     }
 }

@@ -55,10 +55,26 @@ mod tests {
         let rj = SVector::<f64, 2>::new(0.13, 0.17);
         let rho = |r: &SVector<f64, 2>| 1000.0 + g.dot(r);
         let rij = ri - rj;
-        let p = psi(DensityDiffusion::DeltaSph, rho(&ri), rho(&rj), &rij, rij.norm_squared(), &g, &g);
+        let p = psi(
+            DensityDiffusion::DeltaSph,
+            rho(&ri),
+            rho(&rj),
+            &rij,
+            rij.norm_squared(),
+            &g,
+            &g,
+        );
         // Its projection on r_ij (the only part that meets ∇W) vanishes.
         assert!(p.dot(&rij).abs() < 1e-12);
-        let pm = psi(DensityDiffusion::MolteniColagrossi, rho(&ri), rho(&rj), &rij, rij.norm_squared(), &g, &g);
+        let pm = psi(
+            DensityDiffusion::MolteniColagrossi,
+            rho(&ri),
+            rho(&rj),
+            &rij,
+            rij.norm_squared(),
+            &g,
+            &g,
+        );
         assert!(pm.dot(&rij).abs() > 1e-3);
     }
 }

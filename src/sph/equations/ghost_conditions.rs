@@ -12,7 +12,11 @@ use nalgebra::SVector;
 
 /// Free-slip ghost velocity.
 #[inline]
-pub fn free_slip_velocity<const D: usize>(u_i: &SVector<f64, D>, u_wall: &SVector<f64, D>, n: &SVector<f64, D>) -> SVector<f64, D> {
+pub fn free_slip_velocity<const D: usize>(
+    u_i: &SVector<f64, D>,
+    u_wall: &SVector<f64, D>,
+    n: &SVector<f64, D>,
+) -> SVector<f64, D> {
     u_i - n * (2.0 * (u_i - u_wall).dot(n))
 }
 

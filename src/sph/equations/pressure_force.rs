@@ -5,6 +5,12 @@ use nalgebra::SVector;
 
 /// Contribution of neighbour j (m/s²).
 #[inline]
-pub fn pressure_acceleration<const D: usize>(p_i: f64, p_j: f64, rho_i: f64, grad_w: &SVector<f64, D>, v_j: f64) -> SVector<f64, D> {
+pub fn pressure_acceleration<const D: usize>(
+    p_i: f64,
+    p_j: f64,
+    rho_i: f64,
+    grad_w: &SVector<f64, D>,
+    v_j: f64,
+) -> SVector<f64, D> {
     grad_w * (-(p_i + p_j) * v_j / rho_i)
 }

@@ -12,7 +12,10 @@ pub struct RenormalizedGradient<const D: usize> {
 
 impl<const D: usize> Default for RenormalizedGradient<D> {
     fn default() -> Self {
-        Self { b_inv: SMatrix::zeros(), sum: SVector::zeros() }
+        Self {
+            b_inv: SMatrix::zeros(),
+            sum: SVector::zeros(),
+        }
     }
 }
 

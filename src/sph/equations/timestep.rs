@@ -10,6 +10,10 @@ pub fn signal_speed(c_i: f64, speed_i: f64, h: f64, max_pi: f64) -> f64 {
 /// Δt from the largest signal speed and the largest acceleration.
 pub fn time_step(cfl: f64, h: f64, max_signal: f64, max_accel: f64) -> f64 {
     let acoustic = cfl * h / max_signal;
-    let force = if max_accel > 0.0 { 0.25 * (h / max_accel).sqrt() } else { f64::INFINITY };
+    let force = if max_accel > 0.0 {
+        0.25 * (h / max_accel).sqrt()
+    } else {
+        f64::INFINITY
+    };
     acoustic.min(force)
 }

@@ -41,6 +41,12 @@ pub fn pi_ij<const D: usize>(u_ji: &SVector<f64, D>, r_ij: &SVector<f64, D>, r2:
 
 /// Contribution of neighbour j (m/s²).
 #[inline]
-pub fn viscous_acceleration<const D: usize>(coef: f64, rho_i: f64, pi: f64, grad_w: &SVector<f64, D>, v_j: f64) -> SVector<f64, D> {
+pub fn viscous_acceleration<const D: usize>(
+    coef: f64,
+    rho_i: f64,
+    pi: f64,
+    grad_w: &SVector<f64, D>,
+    v_j: f64,
+) -> SVector<f64, D> {
     grad_w * (coef * pi * v_j / rho_i)
 }
