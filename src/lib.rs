@@ -1,6 +1,7 @@
 //! bowwave: 2D+t δ-SPH simulation of breaking bow waves.
 //!
 //! * [`sph`]: the solver core, generic over the dimension; knows nothing of hulls, CLI or files.
+//! * [`geometry`]: hull offsets files, the spline surface and its 2D+t sections; knows nothing of SPH.
 //! * [`cases`]: case descriptions (TOML) and the built-in cases, turned into simulations and run.
 //! * [`validation`]: comparisons with analytic solutions and published data.
 //! * [`io`]: writers, one file per format (CSV, VTK, PNG plots), and atomic writes.
@@ -8,6 +9,7 @@
 
 pub mod bench;
 pub mod cases;
+pub mod geometry;
 pub mod io;
 pub mod reference;
 pub mod sph;

@@ -62,6 +62,11 @@ enum Command {
         #[arg(long, value_delimiter = ',', default_value = "1,2")]
         threads: Vec<usize>,
     },
+    /// Hull geometry: check a hull file, or generate the Wigley hull.
+    Hull {
+        #[command(subcommand)]
+        action: HullAction,
+    },
     /// (Internal) one benchmark configuration, printed as JSON; used by `bench`.
     #[command(hide = true)]
     BenchOne {
@@ -74,6 +79,28 @@ enum Command {
     Cases {
         /// Print this built-in case's TOML.
         name: Option<String>,
+    },
+}
+
+#[derive(Subcommand)]
+enum HullAction {
+    /// Hydrostatics from the spline surface (displacement, Cb, Cp, Cm, Cwp, LCB, girths) beside the declared
+    /// particulars; warns where they differ by more than 2 %.
+    Check {
+        /// Hull offsets file (CSV, see docs/hull-format.md).
+        file: PathBuf,
+    },
+    /// Write the parabolic Wigley hull (L/B = 5, L/D = 10, wall-sided above the waterline) as a hull file.
+    Wigley {
+        /// Number of stations, stem and stern included.
+        #[arg(long, default_value_t = 21)]
+        stations: usize,
+        /// Reference length L (m).
+        #[arg(long, default_value_t = 100.0)]
+        length: f64,
+        /// Output file.
+        #[arg(long, default_value = "hulls/wigley.csv")]
+        out: PathBuf,
     },
 }
 
@@ -107,6 +134,31 @@ fn main() -> anyhow::Result<()> {
         Command::Bench { res, end, threads } => {
             bench::bench_cli(&res, end, &threads)?;
         }
+        Command::Hull { action } => match action {
+            HullAction::Check { file } => {
+                let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;
+                let (text, warnings) = bowwave::geometry::report::check_report(&h);
+                print!("{text}");
+                if warnings > 0 {
+                    eprintln!("{warnings} warning(s)");
+                }
+            }
+            HullAction::Wigley { stations, length, out } => {
+                anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");
+                anyhow::ensure!(
+                    length > 0.0 && length.is_finite(),
+                    "--length: expected a positive length in metres"
+                );
+                let spec = bowwave::geometry::wigley::WigleySpec {
+                    stations,
+                    length_m: length,
+                    ..Default::default()
+                };
+                let h = bowwave::geometry::wigley::wigley(&spec);
+                bowwave::io::atomic::write_atomic(&out, h.to_csv().as_bytes())?;
+                println!("wrote {}", out.display());
+            }
+        },
         Command::BenchOne { res, end } => {
             let r = bench::bench_one(res, end)?;
             println!("{}", serde_json::to_string(&r)?);

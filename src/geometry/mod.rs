@@ -1,0 +1,9 @@
+//! Hull geometry: offsets files, their validation, generators, the spline surface and its sections.
+//! Knows nothing of SPH.
+
+pub mod hull_file;
+pub mod hydrostatics;
+pub mod report;
+pub mod spline;
+pub mod surface;
+pub mod wigley;

@@ -1,0 +1,137 @@
+//! Hull geometry: the Wigley surface against its analytic form, hydrostatics, and the malformed-file corpus.
+
+use bowwave::geometry::{
+    hull_file::HullOffsets,
+    hydrostatics::{hydrostatics, section_hydro},
+    surface::HullSurface,
+    wigley::{wigley, WigleySpec},
+};
+
+const B: f64 = 0.2;
+const D: f64 = 0.1;
+
+/// Analytic w_n/U of the Wigley section at (x, z): f_x/√(1 + f_z²), f = (B/2)(1 − (2x−1)²)(1 − z²/D²).
+fn wn_exact(x: f64, z: f64) -> f64 {
+    let zz = z.min(0.0);
+    let xi = 2.0 * x - 1.0;
+    let fx = 0.5 * B * (-4.0 * xi) * (1.0 - zz * zz / (D * D));
+    let fz = if z < 0.0 {
+        0.5 * B * (1.0 - xi * xi) * (-2.0 * zz / (D * D))
+    } else {
+        0.0
+    };
+    fx / (1.0 + fz * fz).sqrt()
+}
+
+/// (max relative section-area error, RMS w_n error / (B/L)) over 0.05 ≤ x ≤ 0.95.
+fn wigley_errors(nsec: usize) -> (f64, f64) {
+    let h = wigley(&WigleySpec {
+        stations: nsec,
+        ..Default::default()
+    });
+    let s = HullSurface::new(&h);
+    let (mut area_err, mut sq, mut n) = (0.0f64, 0.0, 0usize);
+    for i in 0..=90 {
+        let x = 0.05 + 0.01 * i as f64;
+        let exact = B * (1.0 - (2.0 * x - 1.0).powi(2)) * 2.0 * D / 3.0;
+        let a = section_hydro(&s, x, 4000).area;
+        area_err = area_err.max((a - exact).abs() / exact);
+        for p in s.section(x, 0.002).unwrap() {
+            if p.z < -0.98 * D {
+                continue; // the keel point, where the normal turns through the centre plane
+            }
+            let e = p.w_n_over_u - wn_exact(x, p.z);
+            sq += e * e;
+            n += 1;
+        }
+    }
+    (area_err, (sq / n as f64).sqrt() / B)
+}
+
+#[test]
+fn wigley_sections_match_the_analytic_surface_and_converge() {
+    let (a21, w21) = wigley_errors(21);
+    let (a41, w41) = wigley_errors(41);
+    println!("N_sec = 21: max area error {a21:.3e}, RMS w_n error {w21:.3e} U B/L");
+    println!("N_sec = 41: max area error {a41:.3e}, RMS w_n error {w41:.3e} U B/L");
+    println!(
+        "observed orders: area {:.2}, w_n {:.2}",
+        (a21 / a41).log2(),
+        (w21 / w41).log2()
+    );
+    assert!(a21 < 1e-3, "section area error {a21} above 0.1 %");
+    assert!(w21 < 5e-3, "w_n RMS error {w21} above 0.5 % of U B/L");
+    assert!(a41 < a21 && w41 < w21, "errors must fall when N_sec doubles");
+}
+
+#[test]
+fn wigley_hydrostatics_match_the_exact_coefficients() {
+    let s = HullSurface::new(&wigley(&WigleySpec::default()));
+    let (h, _) = hydrostatics(&s, 200, 2000);
+    println!("{h:?}");
+    for (name, v, exact) in [
+        ("Cb", h.cb, 4.0 / 9.0),
+        ("Cp", h.cp, 2.0 / 3.0),
+        ("Cm", h.cm, 2.0 / 3.0),
+        ("Cwp", h.cwp, 2.0 / 3.0),
+        ("LCB", h.lcb, 0.5),
+    ] {
+        assert!((v - exact).abs() / exact < 2e-3, "{name} = {v}, exact {exact}");
+    }
+}
+
+#[test]
+fn section_is_empty_outside_the_hull() {
+    let s = HullSurface::new(&wigley(&WigleySpec::default()));
+    assert!(s.section(-0.01, 0.01).is_none());
+    assert!(s.section(1.01, 0.01).is_none());
+    let mid = s.section(0.5, 0.005).unwrap();
+    // Keel on the centre plane, deck at the top, outward normals point to +y on the wall-sided part.
+    assert!(mid[0].y.abs() < 1e-9 && (mid[0].z + D).abs() < 1e-9);
+    let top = mid.last().unwrap();
+    assert!((top.z - D).abs() < 1e-9 && top.normal[0] > 0.999);
+}
+
+#[test]
+fn every_malformed_hull_file_is_rejected_with_a_located_message() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/malformed_hulls");
+    let mut files: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+    files.sort();
+    assert!(files.len() >= 12, "the corpus must hold at least 12 files");
+    let expect = [
+        ("01_", "aft"),
+        ("02_", "at least 3"),
+        ("03_", "finite"),
+        ("04_", "negative half-breadth"),
+        ("05_", "centre plane"),
+        ("06_", "self-intersecting"),
+        ("07_", "draft_m"),
+        ("08_", "beam_m"),
+        ("09_", "status"),
+        ("10_", "header"),
+        ("11_", "out of order"),
+        ("12_", "outside [0, 1]"),
+        ("13_", "draft_m"),
+        ("14_", "expected 5 numbers"),
+        ("15_", "length_m"),
+        ("16_", "no header"),
+    ];
+    for f in &files {
+        let name = f.file_name().unwrap().to_string_lossy().to_string();
+        let result = std::panic::catch_unwind(|| HullOffsets::read(f));
+        let err = result
+            .unwrap_or_else(|_| panic!("{name}: the parser panicked"))
+            .expect_err(&format!("{name} must be rejected"));
+        let msg = err.to_string();
+        println!("{msg}");
+        assert!(msg.contains(&name), "{name}: message does not name the file: {msg}");
+        let (_, needle) = expect
+            .iter()
+            .find(|(p, _)| name.starts_with(p))
+            .unwrap_or_else(|| panic!("no expectation for {name}"));
+        assert!(
+            msg.contains(needle),
+            "{name}: message does not name the problem `{needle}`: {msg}"
+        );
+    }
+}
