@@ -90,6 +90,29 @@ enum HullAction {
         /// Hull offsets file (CSV, see docs/hull-format.md).
         file: PathBuf,
     },
+    /// Slice a triangulated hull (STL, metres, z = 0 at the waterline) at stations and write a hull file.
+    Import {
+        /// The STL file (ASCII or binary).
+        stl: PathBuf,
+        /// Hull name for the metadata.
+        #[arg(long)]
+        name: String,
+        /// Number of equally spaced stations between the ends (exclusive).
+        #[arg(long, default_value_t = 21)]
+        stations: usize,
+        /// Reference length L (m); default: the mesh's length along x.
+        #[arg(long)]
+        length: Option<f64>,
+        /// The stem is at the largest x of the mesh (default: the smallest).
+        #[arg(long)]
+        stem_at_max_x: bool,
+        /// The hull ends in a transom.
+        #[arg(long)]
+        transom: bool,
+        /// Output hull file.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Write the parabolic Wigley hull (L/B = 5, L/D = 10, wall-sided above the waterline) as a hull file.
     Wigley {
         /// Number of stations, stem and stern included.
@@ -142,6 +165,30 @@ fn main() -> anyhow::Result<()> {
                 if warnings > 0 {
                     eprintln!("{warnings} warning(s)");
                 }
+            }
+            HullAction::Import {
+                stl,
+                name,
+                stations,
+                length,
+                stem_at_max_x,
+                transom,
+                out,
+            } => {
+                anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");
+                let xs: Vec<f64> = (0..stations).map(|i| (i as f64 + 0.5) / stations as f64).collect();
+                let opts = bowwave::geometry::stl::ImportOptions {
+                    name,
+                    stations: xs,
+                    length_m: length,
+                    stem_at_max_x,
+                    transom,
+                };
+                let h = bowwave::geometry::stl::import_stl(&stl, &opts)?;
+                let text = h.to_csv();
+                bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
+                bowwave::io::atomic::write_atomic(&out, text.as_bytes())?;
+                println!("wrote {} ({} stations)", out.display(), h.stations.len());
             }
             HullAction::Wigley { stations, length, out } => {
                 anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");

@@ -135,3 +135,63 @@ fn every_malformed_hull_file_is_rejected_with_a_located_message() {
         );
     }
 }
+
+#[test]
+fn wigley_stl_export_imports_back_to_the_same_sections() {
+    use bowwave::geometry::stl::{import_stl, surface_triangles, write_stl, ImportOptions};
+    let s = HullSurface::new(&wigley(&WigleySpec::default()));
+    let dir = std::env::temp_dir().join(format!("bowwave-stl-{}", std::process::id()));
+    let path = dir.join("wigley.stl");
+    write_stl(&path, &surface_triangles(&s, 200, 100, true)).unwrap();
+    let stations: Vec<f64> = (1..=19).map(|i| 0.05 * i as f64 + 0.0021).collect(); // between mesh lines
+    let h = import_stl(
+        &path,
+        &ImportOptions {
+            name: "wigley-stl".into(),
+            stations: stations.clone(),
+            length_m: None,
+            stem_at_max_x: false,
+            transom: false,
+        },
+    )
+    .unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut worst = 0.0f64;
+    for st in &h.stations {
+        let c = s.curve(st.x).unwrap();
+        let dense: Vec<[f64; 2]> = (0..=4000)
+            .map(|k| {
+                let p = c.point(k as f64 / 4000.0);
+                [p.y, p.z]
+            })
+            .collect();
+        for q in &st.points {
+            let d = dense
+                .windows(2)
+                .map(|w| seg_dist(*q, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min);
+            worst = worst.max(d);
+        }
+        // Keel first, on the centre plane; deck last.
+        assert!(st.points[0][0].abs() < 1e-9);
+        assert!((st.points.last().unwrap()[1] - D).abs() < 1e-5);
+    }
+    println!(
+        "largest distance of an imported section point from the surface: {:.3e} B",
+        worst / B
+    );
+    assert!(worst < 1e-3 * B, "imported sections differ by {worst} (> 0.1 % of B)");
+    // The imported file is itself a valid hull file.
+    HullOffsets::parse(&h.to_csv(), "imported.csv").expect("imported offsets pass the checks");
+}
+
+fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (abx, aby) = (b[0] - a[0], b[1] - a[1]);
+    let l2 = abx * abx + aby * aby;
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * abx + (p[1] - a[1]) * aby) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p[0] - a[0] - t * abx).hypot(p[1] - a[1] - t * aby)
+}

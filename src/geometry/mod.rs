@@ -5,5 +5,6 @@ pub mod hull_file;
 pub mod hydrostatics;
 pub mod report;
 pub mod spline;
+pub mod stl;
 pub mod surface;
 pub mod wigley;
