@@ -113,6 +113,19 @@ enum HullAction {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Generate a labelled approximation (athena, alliance) from the parametric family, calibrated to its
+    /// particulars (Cb by bisection on the midship section shape), and write it as a hull file.
+    Generate {
+        /// athena or alliance.
+        hull: String,
+        #[arg(long, default_value_t = 41)]
+        stations: usize,
+        #[arg(long, default_value_t = 31)]
+        points: usize,
+        /// Output file (default hulls/NAME.csv).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
     /// Write the parabolic Wigley hull (L/B = 5, L/D = 10, wall-sided above the waterline) as a hull file.
     Wigley {
         /// Number of stations, stem and stern included.
@@ -127,7 +140,14 @@ enum HullAction {
     },
 }
 
-fn main() -> anyhow::Result<()> {
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("error: {e:#}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> anyhow::Result<()> {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let cli = Cli::parse();
     if let Some(n) = cli.threads {
@@ -189,6 +209,33 @@ fn main() -> anyhow::Result<()> {
                 bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
                 bowwave::io::atomic::write_atomic(&out, text.as_bytes())?;
                 println!("wrote {} ({} stations)", out.display(), h.stations.len());
+            }
+            HullAction::Generate {
+                hull,
+                stations,
+                points,
+                out,
+            } => {
+                use bowwave::geometry::parametric;
+                let mut spec = match hull.as_str() {
+                    "athena" => parametric::athena(),
+                    "alliance" => parametric::alliance(),
+                    other => anyhow::bail!("hull `{other}`: expected `athena` or `alliance`"),
+                };
+                anyhow::ensure!(
+                    stations >= 4 && points >= 3,
+                    "--stations >= 4 and --points >= 3 expected"
+                );
+                let cb = spec.calibrate(stations, points);
+                let h = spec.offsets(stations, points);
+                let out = out.unwrap_or_else(|| PathBuf::from("hulls").join(format!("{hull}.csv")));
+                bowwave::io::atomic::write_atomic(&out, h.to_csv().as_bytes())?;
+                println!(
+                    "wrote {} (Cb = {cb:.4}, target {:.4}, n_mid = {:.3})",
+                    out.display(),
+                    spec.target_cb,
+                    spec.n_mid
+                );
             }
             HullAction::Wigley { stations, length, out } => {
                 anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");

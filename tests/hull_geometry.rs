@@ -195,3 +195,29 @@ fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
     };
     (p[0] - a[0] - t * abx).hypot(p[1] - a[1] - t * aby)
 }
+
+#[test]
+fn approximated_athena_and_alliance_reproduce_their_particulars() {
+    use bowwave::geometry::parametric::{alliance, athena};
+    for mut spec in [athena(), alliance()] {
+        spec.calibrate(41, 31);
+        let h = spec.offsets(41, 31);
+        let text = h.to_csv();
+        let h = HullOffsets::parse(&text, &format!("{}.csv", spec.name)).expect("generated file passes the checks");
+        let (hy, _) = hydrostatics(&HullSurface::new(&h), 400, 1500);
+        let l = spec.length_m;
+        let checks = [
+            ("B (m)", hy.beam * l, spec.beam * l),
+            ("T (m)", hy.draft * l, spec.draft * l),
+            ("Cb", hy.cb, spec.target_cb),
+        ];
+        for (name, ours, target) in checks {
+            println!("{}: {name} = {ours:.4}, target {target:.4}", spec.name);
+            assert!(
+                (ours - target).abs() / target < 0.02,
+                "{}: {name} = {ours}, target {target}",
+                spec.name
+            );
+        }
+    }
+}

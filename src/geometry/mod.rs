@@ -3,6 +3,7 @@
 
 pub mod hull_file;
 pub mod hydrostatics;
+pub mod parametric;
 pub mod report;
 pub mod spline;
 pub mod stl;
