@@ -126,6 +126,14 @@ enum HullAction {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Draw a hull: body plan, profile, waterline plan and w_n along the girth (PNG).
+    Show {
+        /// Hull offsets file.
+        file: PathBuf,
+        /// Output folder.
+        #[arg(long, default_value = "out/hull")]
+        out: PathBuf,
+    },
     /// Write the parabolic Wigley hull (L/B = 5, L/D = 10, wall-sided above the waterline) as a hull file.
     Wigley {
         /// Number of stations, stem and stern included.
@@ -236,6 +244,13 @@ fn run() -> anyhow::Result<()> {
                     spec.target_cb,
                     spec.n_mid
                 );
+            }
+            HullAction::Show { file, out } => {
+                let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;
+                let s = bowwave::geometry::surface::HullSurface::new(&h);
+                for f in bowwave::geometry::drawings::draw(&s, &out)? {
+                    println!("{}", f.display());
+                }
             }
             HullAction::Wigley { stations, length, out } => {
                 anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");

@@ -40,10 +40,41 @@ const COLOURS: [RGBColor; 8] = [
     RGBColor(23, 190, 207),
 ];
 
-/// Draws the series on linear axes and writes a PNG (1000×600).
+/// Draws the series on linear axes and writes a PNG (1000×600) with a legend.
 pub fn line_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series: &[Series]) -> anyhow::Result<()> {
+    line_plot_with(path, title, xlabel, ylabel, series, &PlotOptions::default())
+}
+
+/// Size, legend and fixed ranges of a plot.
+#[derive(Clone, Debug)]
+pub struct PlotOptions {
+    pub size: (u32, u32),
+    pub legend: bool,
+    /// Fixed (x0, x1, y0, y1); `None`: fitted to the data.
+    pub range: Option<(f64, f64, f64, f64)>,
+}
+
+impl Default for PlotOptions {
+    fn default() -> Self {
+        PlotOptions {
+            size: (1000, 600),
+            legend: true,
+            range: None,
+        }
+    }
+}
+
+/// Draws the series with options and writes a PNG.
+pub fn line_plot_with(
+    path: &Path,
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    series: &[Series],
+    opts: &PlotOptions,
+) -> anyhow::Result<()> {
     register_font();
-    let (w, h) = (1000u32, 600u32);
+    let (w, h) = opts.size;
     let mut buf = vec![0u8; (w * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
@@ -68,7 +99,11 @@ pub fn line_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series: &
         if y1 <= y0 {
             y1 = y0 + 1.0;
         }
-        let pad = 0.05 * (y1 - y0);
+        let mut pad = 0.05 * (y1 - y0);
+        if let Some(r) = opts.range {
+            (x0, x1, y0, y1) = r;
+            pad = 0.0;
+        }
         let mut chart = ChartBuilder::on(&root)
             .caption(title, ("sans-serif", 24))
             .margin(15)
@@ -105,12 +140,14 @@ pub fn line_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series: &
                 }
             }
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 16))
-            .draw()?;
+        if opts.legend {
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 16))
+                .draw()?;
+        }
         root.present()?;
     }
     let img = encode_png(&buf, w, h)?;
