@@ -65,17 +65,20 @@ fn oscillating_drop_follows_the_ode_for_two_periods() {
 }
 
 #[test]
-fn dam_break_first_impact_at_p1_matches_buchner_at_h_over_dx_40() {
-    // Up to t* = 3.2: the first impact. Checked here against Buchner's experiment (first rise 2.478);
-    // the comparison with Marrone et al.'s H/dx = 40 curve (2.572) misses 0.1 by about 0.01 and is
-    // reported by `bowwave validate`, not hidden: see docs/method.md.
-    let r = run_case("dam-break", 40.0, Some(3.2 * (0.6f64 / 9.81).sqrt()));
-    let c = validation::dam_break(&r);
-    let buchner = c
-        .iter()
-        .find(|c| c.quantity.contains("Buchner") && c.tolerance.is_some())
-        .expect("Buchner impact check");
-    assert_checks(std::slice::from_ref(buchner));
+fn impact_time_measure_reads_the_published_curves() {
+    // The first-impact measure used by `bowwave validate` (first crossing of p/(ρgH) = 0.1), applied to the
+    // published data themselves. Our own impact time is not asserted here: at H/dx = 40 it matches Buchner only
+    // through a splash spike and at H/dx = 80 it misses both references (docs/method.md), so `validate` reports
+    // FAIL for it.
+    use bowwave::reference::{col, load, named};
+    let m = load("marrone_p1");
+    let t = col(&m, 0);
+    let rise = |name: &str| validation::first_rise(&t, &named(&m, name), validation::IMPACT_LEVEL);
+    assert!((rise("p_over_rho_g_H_deltaSPH_H_over_dx_40") - 2.572).abs() < 0.005);
+    assert!((rise("p_over_rho_g_H_deltaSPH_H_over_dx_80") - 2.540).abs() < 0.005);
+    assert!((rise("p_over_rho_g_H_deltaSPH_H_over_dx_320") - 2.534).abs() < 0.005);
+    let b = load("buchner_p1");
+    assert!((validation::first_rise(&col(&b, 0), &col(&b, 1), validation::IMPACT_LEVEL) - 2.478).abs() < 0.005);
 }
 
 #[test]

@@ -22,14 +22,25 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
 /// A problem in a hull file.
-#[derive(Debug, thiserror::Error, PartialEq)]
-#[error("{file}:{line}: {problem}")]
+#[derive(Debug, PartialEq)]
 pub struct HullFileError {
     pub file: String,
     /// 1-based line number (0 when the problem concerns the whole file).
     pub line: usize,
     pub problem: String,
 }
+
+impl std::fmt::Display for HullFileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.line == 0 {
+            write!(f, "{}: {}", self.file, self.problem)
+        } else {
+            write!(f, "{}:{}: {}", self.file, self.line, self.problem)
+        }
+    }
+}
+
+impl std::error::Error for HullFileError {}
 
 /// Whether the offsets are the real hull or a labelled approximation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
