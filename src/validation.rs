@@ -59,6 +59,23 @@ pub fn full_resolution(case: &str) -> Option<f64> {
     }
 }
 
+/// Largest |a − a_ref|/a_ref over the samples with t ≤ t_max, as (error, ours, reference).
+fn worst_relative_error(t: &[f64], a: &[f64], tr: &[f64], ar: &[f64], t_max: f64) -> (f64, f64, f64) {
+    let mut worst = (0.0, 0.0, 0.0);
+    for (ti, ai) in t.iter().zip(a) {
+        if *ti > t_max {
+            break;
+        }
+        if let Some(aref) = interp(tr, ar, *ti) {
+            let e = (ai - aref).abs() / aref;
+            if e >= worst.0 {
+                worst = (e, *ai, aref);
+            }
+        }
+    }
+    worst
+}
+
 /// Hydrostatic tank: bottom pressure within 1 % of ρgH and E_K/(M g H) < 1e-5 at the end.
 pub fn hydrostatic(r: &RunResult) -> Vec<Check> {
     let p = col(r, "pstar_bottom");
@@ -94,18 +111,7 @@ pub fn elliptic_drop(r: &RunResult) -> Vec<Check> {
     let rt = reference::load("elliptic_drop");
     let (tr, ar) = (named(&rt, "t_s"), named(&rt, "a_semi_axis_x_m"));
     let (t, a) = (col(r, "t"), col(r, "semi_axis_x"));
-    let mut worst = (0.0, 0.0, 0.0);
-    for (ti, ai) in t.iter().zip(&a) {
-        if *ti > 0.008 + 1e-12 {
-            break;
-        }
-        if let Some(aref) = interp(&tr, &ar, *ti) {
-            let e = (ai - aref).abs() / aref;
-            if e >= worst.0 {
-                worst = (e, *ai, aref);
-            }
-        }
-    }
+    let worst = worst_relative_error(&t, &a, &tr, &ar, 0.008 + 1e-12);
     let a_end = interp(&t, &a, 0.008).unwrap_or(f64::NAN);
     let aref_end = interp(&tr, &ar, 0.008).unwrap_or(f64::NAN);
     vec![
@@ -134,18 +140,7 @@ pub fn oscillating_drop(r: &RunResult) -> Vec<Check> {
     let (tr, ar) = (named(&rt, "t"), named(&rt, "A_semi_axis_x"));
     let (t, a) = (col(r, "t"), col(r, "semi_axis_x"));
     let period = 4.567375;
-    let mut worst = (0.0, 0.0, 0.0);
-    for (ti, ai) in t.iter().zip(&a) {
-        if *ti > 2.0 * period {
-            break;
-        }
-        if let Some(aref) = interp(&tr, &ar, *ti) {
-            let e = (ai - aref).abs() / aref;
-            if e >= worst.0 {
-                worst = (e, *ai, aref);
-            }
-        }
-    }
+    let worst = worst_relative_error(&t, &a, &tr, &ar, 2.0 * period);
     let de = col(r, "de_mechanical_rel");
     let e_end = *de.last().unwrap();
     vec![

@@ -144,17 +144,6 @@ pub fn mls_weights<const D: usize>(h: f64, neighbours: &[(usize, SVector<f64, D>
     out
 }
 
-/// Zeroth-order (Shepard) weights from neighbours given as (index, x − x_j, W_j V_j); zero gradient.
-pub fn shepard_weights<const D: usize>(neighbours: &[(usize, SVector<f64, D>, f64)]) -> MlsWeights<D> {
-    let s: f64 = neighbours.iter().map(|n| n.2).sum();
-    MlsWeights {
-        neighbours: neighbours.iter().map(|n| n.0).collect(),
-        value: neighbours.iter().map(|n| if s > 0.0 { n.2 / s } else { 0.0 }).collect(),
-        gradient: vec![SVector::zeros(); neighbours.len()],
-        first_order: false,
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -638,17 +638,4 @@ impl<const D: usize> Simulation<D> {
             });
         (w > 0.0).then(|| s / w)
     }
-
-    /// Fluid particles within the kernel support of `x` (indices), via the cell list. Call after refresh.
-    pub fn fluid_neighbours_of(&self, x: &SVector<f64, D>) -> Vec<usize> {
-        let nf = self.fluid.len();
-        let mut v = vec![];
-        self.cells
-            .for_each_within(&self.all_pos, x, self.kernel.support, |j, _, _| {
-                if j < nf {
-                    v.push(j)
-                }
-            });
-        v
-    }
 }
