@@ -7,6 +7,7 @@
 //! * [`io`]: writers, one file per format (CSV, VTK, PNG plots), and atomic writes.
 //! * [`bench`]: throughput measurement.
 
+pub mod analysis;
 pub mod bench;
 pub mod cases;
 pub mod geometry;

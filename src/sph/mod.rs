@@ -3,9 +3,11 @@
 
 pub mod body_force;
 pub mod boundary;
+pub mod deforming_wall;
 pub mod diagnostics;
 pub mod eos;
 pub mod equations;
+pub mod free_surface;
 pub mod integrator;
 pub mod kernel;
 pub mod mls;

@@ -239,9 +239,14 @@ fn sample_offset(q: &[V2], normals: &[V2], ds: f64) -> Vec<V2> {
 
 /// Nearest point on the polyline to `x`.
 pub fn nearest_point(points: &[V2], x: &V2) -> V2 {
-    let mut best = points[0];
+    nearest_on_polyline(points, x).0
+}
+
+/// Nearest point on the polyline to `x`, with the segment it lies on and its parameter in [0, 1] there.
+pub fn nearest_on_polyline(points: &[V2], x: &V2) -> (V2, usize, f64) {
+    let mut best = (points[0], 0, 0.0);
     let mut best_d2 = f64::INFINITY;
-    for w in points.windows(2) {
+    for (k, w) in points.windows(2).enumerate() {
         let (a, b) = (w[0], w[1]);
         let ab = b - a;
         let l2 = ab.norm_squared();
@@ -254,36 +259,69 @@ pub fn nearest_point(points: &[V2], x: &V2) -> V2 {
         let d2 = (x - p).norm_squared();
         if d2 < best_d2 {
             best_d2 = d2;
-            best = p;
+            best = (p, k, t);
         }
     }
     best
 }
 
-/// The ghost layers of a polyline: offsets (k + ½) ds for all k with (k + ½) ds < support.
+/// Velocity and acceleration of every vertex of a deforming polyline (m/s, m/s²); the wall's values at a
+/// ghost are interpolated linearly along the segment of its foot.
+#[derive(Clone, Debug, Default)]
+pub struct VertexMotion {
+    pub vel: Vec<V2>,
+    pub acc: Vec<V2>,
+}
+
+/// The ghost layers of a still polyline: offsets (k + ½) ds for all k with (k + ½) ds < support.
 pub fn ghost_layers(points: &[V2], side: FluidSide, ds: f64, support: f64) -> GhostGeometry<2> {
+    ghost_layers_moving(points, None, side, ds, support)
+}
+
+/// The ghost layers of a polyline whose vertices move with `motion` (a deforming wall, thesis §7.1.1:
+/// "the generation of the fixed ghost particles is repeated at each time step"). Ghosts whose foot is a
+/// corner vertex (turn above 30°) mirror through that point (Fig. 7.3); all others through the wall.
+pub fn ghost_layers_moving(
+    points: &[V2],
+    motion: Option<&VertexMotion>,
+    side: FluidSide,
+    ds: f64,
+    support: f64,
+) -> GhostGeometry<2> {
     let mut g = GhostGeometry::default();
     if points.len() < 2 {
         return g;
     }
     let normals = solid_normals(points, side);
+    let corners: Vec<V2> = (1..points.len() - 1)
+        .filter(|&k| is_corner(&normals, k))
+        .map(|k| points[k])
+        .collect();
     let mut k = 0;
+    let mut samples = vec![];
     while (k as f64 + 0.5) * ds < support {
         let d = (k as f64 + 0.5) * ds;
         let q = offset_polyline(points, &normals, d);
-        for p in sample_offset(&q, &normals, ds) {
-            let foot = nearest_point(points, &p);
-            let at_vertex = points[1..points.len() - 1]
-                .iter()
-                .any(|v| (v - foot).norm() < 1e-9 * ds);
-            g.mirror.push(if at_vertex { Mirror::Point } else { Mirror::Plane });
-            g.pos.push(p);
-            g.interp.push(foot * 2.0 - p);
-            g.wall_vel.push(V2::zeros());
-            g.wall_acc.push(V2::zeros());
-            g.volume.push(ds * ds);
-        }
+        samples.extend(sample_offset(&q, &normals, ds));
         k += 1;
+    }
+    use rayon::prelude::*;
+    let feet: Vec<(V2, usize, f64)> = samples.par_iter().map(|p| nearest_on_polyline(points, p)).collect();
+    for (p, (foot, seg, t)) in samples.into_iter().zip(feet) {
+        let at_corner = corners.iter().any(|v| (v - foot).norm() < 1e-9 * ds);
+        g.mirror.push(if at_corner { Mirror::Point } else { Mirror::Plane });
+        g.pos.push(p);
+        g.interp.push(foot * 2.0 - p);
+        let (v, a) = match motion {
+            Some(m) => (
+                m.vel[seg] * (1.0 - t) + m.vel[seg + 1] * t,
+                m.acc[seg] * (1.0 - t) + m.acc[seg + 1] * t,
+            ),
+            None => (V2::zeros(), V2::zeros()),
+        };
+        g.wall_vel.push(v);
+        g.wall_acc.push(a);
+        g.volume.push(ds * ds);
     }
     g
 }

@@ -620,6 +620,15 @@ impl<const D: usize> Simulation<D> {
         out
     }
 
+    /// Free-surface particles, eigenvalues λ and normals (thesis §7.2), ghosts counted as matter. Call after
+    /// [`Simulation::refresh`].
+    pub fn free_surface(&self, th: super::free_surface::Thresholds) -> super::free_surface::FreeSurface<D> {
+        let nf = self.fluid.len();
+        let mut volume: Vec<f64> = (0..nf).map(|i| self.fluid.mass[i] / self.fluid.rho[i]).collect();
+        volume.extend_from_slice(&self.ghosts.volume);
+        super::free_surface::detect(&self.kernel, &self.cells, &self.all_pos, &volume, nf, th)
+    }
+
     /// Shepard average of the pressure at `x` over fluid and ghost particles (Pa); `None` if no particle
     /// is within the kernel support. Call after [`Simulation::refresh`].
     pub fn pressure_at(&self, x: &SVector<f64, D>) -> Option<f64> {
