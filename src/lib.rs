@@ -14,4 +14,5 @@ pub mod geometry;
 pub mod io;
 pub mod reference;
 pub mod sph;
+pub mod twodt;
 pub mod validation;

@@ -50,6 +50,48 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// 2D+t bow-wave run: one hull at one Froude number, from the stem to the plunge of the bow wave (or
+    /// further), with the plunge point and jet metrics (metrics.csv/.json), series.csv, eta.csv (free-surface
+    /// elevation η(y) at each output x/L, for wave-pattern maps), PNG snapshots at the plunge and optional VTK.
+    Twodt {
+        /// Hull offsets file (CSV, see docs/hull-format.md).
+        #[arg(long, default_value = "hulls/athena.csv")]
+        hull: PathBuf,
+        /// Ship Froude number U/sqrt(g L).
+        #[arg(long, default_value_t = 0.5)]
+        fr: f64,
+        /// Fine particle spacing dx/L near the free surface (default: from H_pj/dx > 20, eq. 10.9, with the
+        /// bow-wave height estimated from Table 10.1 of the thesis).
+        #[arg(long)]
+        dx: Option<f64>,
+        /// Coarse spacing below the transition, as a multiple of dx (constant h; 1 = uniform).
+        #[arg(long, default_value_t = 1.5)]
+        ratio: f64,
+        /// Where to stop: `plunge` (shortly after it), `transom`, or an x/L value (e.g. 1.3 for stern waves).
+        #[arg(long, default_value = "plunge")]
+        until: String,
+        /// Sound speed / sqrt(g L) (default: 10 × the expected largest velocity).
+        #[arg(long)]
+        c0: Option<f64>,
+        /// Free-surface detection and plunge check every N steps.
+        #[arg(long, default_value_t = 10)]
+        detect_every: usize,
+        /// x/L between outputs (series row, η profile, VTK frame).
+        #[arg(long, default_value_t = 0.005)]
+        output_dx: f64,
+        /// Output folder (default: out/twodt-HULL-frFR).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Write VTK frames (.vtp + .pvd).
+        #[arg(long)]
+        vtk: bool,
+        /// Write a PNG of the bow region at every output.
+        #[arg(long)]
+        frames: bool,
+        /// No progress bar.
+        #[arg(long, short)]
+        quiet: bool,
+    },
     /// Measure throughput (particle-steps per second) on the dam break.
     Bench {
         /// Resolutions H/dx, comma separated.
@@ -165,6 +207,46 @@ fn run() -> anyhow::Result<()> {
             .context("setting the thread count")?;
     }
     match cli.command {
+        Command::Twodt {
+            hull,
+            fr,
+            dx,
+            ratio,
+            until,
+            c0,
+            detect_every,
+            output_dx,
+            out,
+            vtk,
+            frames,
+            quiet,
+        } => {
+            let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
+            let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
+            let cfg = bowwave::twodt::scene::TwoDtConfig {
+                fr,
+                dx,
+                coarse_ratio: ratio,
+                until: until.parse().map_err(anyhow::Error::msg)?,
+                c0,
+                detect_every,
+                output_dx,
+                ..Default::default()
+            };
+            let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("twodt-{}-fr{fr}", offsets.meta.name)));
+            let opts = bowwave::twodt::run::TwoDtOptions {
+                out_dir: out.clone(),
+                progress: !quiet,
+                vtk,
+                plots: true,
+                frames,
+            };
+            let r = bowwave::twodt::run::run(surface, &cfg, &opts)?;
+            bowwave::twodt::report::print(&r, &out);
+            if r.blowup.is_some() {
+                std::process::exit(2);
+            }
+        }
         Command::Run {
             case,
             res,

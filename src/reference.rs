@@ -107,3 +107,43 @@ mod tests {
         }
     }
 }
+
+/// One row of Tables 10.1–10.2 of the thesis (`data/reference/published_jets.csv`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PublishedJet {
+    pub hull: String,
+    pub fr: f64,
+    pub dx_over_l: f64,
+    pub x_plunge_over_l: f64,
+    pub y_plunge_over_l: f64,
+    pub h_pj_over_d: f64,
+}
+
+const PUBLISHED_JETS: &str = include_str!("../data/reference/published_jets.csv");
+
+/// All rows of the published jet table.
+pub fn published_jets() -> Vec<PublishedJet> {
+    PUBLISHED_JETS
+        .lines()
+        .skip(1)
+        .filter_map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            let num = |k: usize| f.get(k).and_then(|v| v.trim().parse::<f64>().ok());
+            Some(PublishedJet {
+                hull: f.first()?.to_string(),
+                fr: num(1)?,
+                dx_over_l: num(2)? * 1e-4,
+                x_plunge_over_l: num(3)?,
+                y_plunge_over_l: num(4)?,
+                h_pj_over_d: num(5)?,
+            })
+        })
+        .collect()
+}
+
+/// The published row for this hull (by name) and Froude number, if any.
+pub fn published_jet(hull: &str, fr: f64) -> Option<PublishedJet> {
+    published_jets()
+        .into_iter()
+        .find(|r| r.hull.eq_ignore_ascii_case(hull) && (r.fr - fr).abs() < 1e-9)
+}

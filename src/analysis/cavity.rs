@@ -119,6 +119,52 @@ pub fn find_cavities(ls: &LevelSet, min_area: f64, keep: impl Fn(&[V2]) -> bool)
 /// Number of grid nodes by which the circulation contour is moved off the cavity into the fluid.
 pub const CONTOUR_OFFSET: usize = 2;
 
+/// Air nodes connected to the top row of the grid (the atmosphere), as a mask over the nodes.
+pub fn atmosphere_mask(ls: &LevelSet) -> Vec<bool> {
+    let (ny, nz) = (ls.ny, ls.nz);
+    let mut mask = vec![false; ny * nz];
+    let mut stack: Vec<usize> = (0..ny)
+        .map(|i| (nz - 1) * ny + i)
+        .filter(|&k| ls.is_air(k % ny, k / ny))
+        .collect();
+    for &k in &stack {
+        mask[k] = true;
+    }
+    while let Some(k) = stack.pop() {
+        let (i, j) = (k % ny, k / ny);
+        let mut next = vec![];
+        if i > 0 {
+            next.push(k - 1);
+        }
+        if i + 1 < ny {
+            next.push(k + 1);
+        }
+        if j > 0 {
+            next.push(k - ny);
+        }
+        if j + 1 < nz {
+            next.push(k + ny);
+        }
+        for kk in next {
+            if !mask[kk] && ls.is_air(kk % ny, kk / ny) {
+                mask[kk] = true;
+                stack.push(kk);
+            }
+        }
+    }
+    mask
+}
+
+/// Whether the point is an atmosphere node of a grid (with its mask); false outside the grid.
+pub fn is_atmosphere(ls: &LevelSet, mask: &[bool], p: &V2) -> bool {
+    let f = (p - ls.origin) / ls.spacing;
+    let (i, j) = (f.x.round(), f.y.round());
+    if i < 0.0 || j < 0.0 || i as usize >= ls.ny || j as usize >= ls.nz {
+        return false;
+    }
+    mask[j as usize * ls.ny + i as usize]
+}
+
 /// Velocity at `x` by first-order MLS from the fluid particles within the kernel support (Shepard where
 /// the fit is ill-conditioned); `None` when no particle is near.
 pub fn velocity_at(s: &Snapshot, cells: &crate::sph::neighbours::CellList<2>, x: &V2) -> Option<V2> {

@@ -89,6 +89,9 @@ pub struct SectionSample {
     pub normal: [f64; 2],
     pub w_n_over_u: f64,
     pub a_n_over_u2_per_l: f64,
+    /// The surface point with its derivatives (velocity of the section point U(y_x, z_x), acceleration
+    /// U²(y_xx, z_xx) at fixed ξ).
+    pub point: SurfacePoint,
 }
 
 impl HullSurface {
@@ -183,6 +186,7 @@ impl HullSurface {
                         normal: p.normal(),
                         w_n_over_u: p.w_n_over_u(),
                         a_n_over_u2_per_l: p.a_n_over_u2_per_l(),
+                        point: p,
                     }
                 })
                 .collect(),

@@ -161,3 +161,75 @@ fn encode_png(rgb: &[u8], w: u32, h: u32) -> anyhow::Result<Vec<u8>> {
     image::write_buffer_with_format(&mut out, rgb, w, h, image::ColorType::Rgb8, image::ImageFormat::Png)?;
     Ok(out.into_inner())
 }
+
+/// Particles coloured by a value (blue → red over [vmin, vmax]) with optional wall polylines in black, on
+/// axes of equal scale over `range` (x0, x1, y0, y1); `width` pixels wide. Written as PNG.
+#[allow(clippy::too_many_arguments)]
+pub fn scatter_plot(
+    path: &Path,
+    title: &str,
+    points: &[(f64, f64)],
+    values: &[f64],
+    (vmin, vmax): (f64, f64),
+    walls: &[Vec<(f64, f64)>],
+    range: (f64, f64, f64, f64),
+    width: u32,
+) -> anyhow::Result<()> {
+    register_font();
+    let (x0, x1, y0, y1) = range;
+    let plot_w = width.saturating_sub(100).max(100) as f64;
+    let h = ((plot_w * (y1 - y0) / (x1 - x0)) as u32 + 110).clamp(200, 4000);
+    let mut buf = vec![0u8; (width * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (width, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 20))
+            .margin(10)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(x0..x1, y0..y1)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .label_style(("sans-serif", 14))
+            .draw()?;
+        let span = (vmax - vmin).max(1e-300);
+        chart.draw_series(
+            points
+                .iter()
+                .zip(values)
+                .filter(|(p, _)| p.0.is_finite() && p.1.is_finite())
+                .map(|(p, v)| {
+                    let s = ((v - vmin) / span).clamp(0.0, 1.0);
+                    Circle::new(*p, 1, colour_map(s).filled())
+                }),
+        )?;
+        for w in walls {
+            chart.draw_series(LineSeries::new(w.iter().copied(), BLACK.stroke_width(2)))?;
+        }
+        root.present()?;
+    }
+    let img = encode_png(&buf, width, h)?;
+    write_atomic(path, &img)?;
+    Ok(())
+}
+
+/// Blue (0) → cyan → yellow → red (1).
+fn colour_map(s: f64) -> RGBColor {
+    let stops = [
+        (0.0, (40, 60, 200)),
+        (0.35, (40, 200, 220)),
+        (0.7, (240, 220, 40)),
+        (1.0, (210, 30, 30)),
+    ];
+    for w in stops.windows(2) {
+        let ((a, ca), (b, cb)) = (w[0], w[1]);
+        if s <= b {
+            let f = (s - a) / (b - a);
+            let mix = |p: u8, q: u8| (p as f64 + (q as f64 - p as f64) * f).round() as u8;
+            return RGBColor(mix(ca.0, cb.0), mix(ca.1, cb.1), mix(ca.2, cb.2));
+        }
+    }
+    RGBColor(210, 30, 30)
+}

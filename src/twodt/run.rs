@@ -1,0 +1,547 @@
+//! Runs one 2D+t case: damped settling, the ship's passage, free-surface detection every few steps, plunge
+//! detection and the jet metrics, outputs (metrics row as CSV and JSON, series, η(y, x) table, plunge
+//! snapshots, VTK).
+
+use super::scene::{build, Scene, TwoDtConfig, Until};
+use crate::analysis::{cavity, jet, level_set, Snapshot};
+use crate::geometry::surface::HullSurface;
+use crate::io::{atomic::write_atomic, csv_table::Table, plot, vtk};
+use crate::sph::free_surface::Thresholds;
+use crate::sph::polyline_wall::nearest_point;
+use nalgebra::Vector2;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::Instant;
+
+type V2 = Vector2<f64>;
+
+/// Output options.
+#[derive(Clone, Debug)]
+pub struct TwoDtOptions {
+    pub out_dir: PathBuf,
+    pub progress: bool,
+    pub vtk: bool,
+    pub plots: bool,
+    /// PNG frame of the bow region (particles by initial depth) at every output.
+    pub frames: bool,
+}
+
+/// Everything measured at the plunge (non-dimensional as named).
+#[derive(Clone, Debug, Default, serde::Serialize)]
+pub struct PlungeMetrics {
+    pub x_plunge_over_l: f64,
+    pub y_plunge_over_l: f64,
+    /// Local Froude number U/√(g x_plunge), x from the stem.
+    pub fr_x: f64,
+    pub h_pj_over_d: f64,
+    /// Crest height minus impact-point height, / D.
+    pub fall_over_d: f64,
+    pub gamma_over_ud: f64,
+    pub cavity_area_over_d2: f64,
+    pub l_jet_over_d: f64,
+    pub s_jet_over_db: f64,
+    pub i_og_over_s2: f64,
+    pub y_g_over_d: f64,
+    pub z_g_over_d: f64,
+    pub v_g_over_u: f64,
+    pub w_g_over_u: f64,
+    pub alpha_g_deg: f64,
+    pub alpha_vg_deg: f64,
+    pub jet_particles: usize,
+}
+
+/// The result of a run.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct TwoDtResult {
+    pub hull: String,
+    pub fr: f64,
+    pub dx_over_l: f64,
+    pub dx_coarse_over_l: f64,
+    pub c0_over_sqrt_gl: f64,
+    pub particles: usize,
+    pub steps: u64,
+    pub wall_seconds: f64,
+    pub cpu_seconds: f64,
+    pub x_end_over_l: f64,
+    /// Kinetic energy left by the settling, / (M g D).
+    pub ke_after_settle: f64,
+    /// Largest |η| in the far field (y > 3W/4) up to the plunge (or the end), / D.
+    pub far_field_eta_over_d: f64,
+    /// Largest max|u|/c0 seen at the detection steps.
+    pub max_mach: f64,
+    /// (total mass at end − at start) / total mass.
+    pub mass_change: f64,
+    pub wall_corrections: u64,
+    pub plunged: bool,
+    pub plunge: Option<PlungeMetrics>,
+    /// Why the run stopped early, if it did.
+    pub blowup: Option<String>,
+}
+
+/// Process CPU time (user + system) from /proc/self/stat, in s; 0 where unavailable.
+fn cpu_seconds() -> f64 {
+    let Ok(s) = std::fs::read_to_string("/proc/self/stat") else {
+        return 0.0;
+    };
+    let rest = s.rsplit(')').next().unwrap_or("");
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let tick = 100.0; // USER_HZ, 100 on Linux
+    let ut: f64 = f.get(11).and_then(|v| v.parse().ok()).unwrap_or(0.0);
+    let st: f64 = f.get(12).and_then(|v| v.parse().ok()).unwrap_or(0.0);
+    (ut + st) / tick
+}
+
+fn snapshot(scene: &mut Scene) -> Snapshot {
+    let sim = &mut scene.sim;
+    sim.refresh();
+    let fs = sim.free_surface(Thresholds::default());
+    let f = &sim.fluid;
+    Snapshot {
+        pos: f.pos.clone(),
+        vel: f.vel.clone(),
+        vol: f.mass.iter().zip(&f.rho).map(|(m, r)| m / r).collect(),
+        on_surface: fs.on_surface,
+        normal: fs.normal,
+        lambda: fs.lambda,
+        h: sim.kernel.h,
+        dx: scene.geom.dx_f,
+    }
+}
+
+/// A cavity counts as a plunge only if its lowest point is below this fraction of the crest height.
+pub const PLUNGE_CAVITY_DEPTH: f64 = 0.5;
+
+/// Looks for a closed air cavity at the bow wave; returns the metrics if the wave has plunged.
+/// The level set of the previous check with its atmosphere mask.
+type PreviousAir = Option<(level_set::LevelSet, Vec<bool>)>;
+
+/// A plunge traps air that was open to the atmosphere at the previous check: at least this fraction of the
+/// cavity's nodes must have been atmosphere then. Holes that open inside a stretched sheet of particles
+/// were fluid before and are not plunges.
+pub const TRAPPED_FRACTION: f64 = 0.5;
+
+fn plunge_check(
+    scene: &Scene,
+    s: &Snapshot,
+    t: f64,
+    previous: &mut PreviousAir,
+) -> Option<(PlungeMetrics, level_set::LevelSet, cavity::Cavity)> {
+    let g = &scene.geom;
+    let h = s.h;
+    let zmax = s.pos.iter().map(|p| p.y).fold(f64::NEG_INFINITY, f64::max);
+    let lo = V2::new(0.0, -0.5 * g.draft);
+    let hi = V2::new(g.width, zmax + 3.0 * h);
+    let ls = level_set::level_set(s, lo, hi, g.dx_f);
+    let walls = scene.profile.at(t).points;
+    let margin = 3.0 * h;
+    let keep = |nodes: &[V2]| {
+        nodes.iter().all(|p| {
+            (nearest_point(&walls, p) - p).norm() > margin && p.x < g.width - margin && p.y > -g.depth + margin
+        })
+    };
+    let cavities = cavity::find_cavities(&ls, (2.0 * h).powi(2), keep);
+    let prev = previous.take();
+    *previous = Some((ls.clone(), cavity::atmosphere_mask(&ls)));
+    let (pls, pmask) = prev?;
+    let was_open = |c: &cavity::Cavity| {
+        let open = c
+            .nodes
+            .iter()
+            .filter(|&&(i, j)| cavity::is_atmosphere(&pls, &pmask, &ls.node(i, j)))
+            .count();
+        open as f64 >= TRAPPED_FRACTION * c.nodes.len() as f64
+    };
+    // Crest: the highest free-surface particle over the cavity or up to one cavity width before it.
+    let crest_of = |c: &cavity::Cavity| {
+        let y_from = c.lo.x - (c.hi.x - c.lo.x);
+        (0..s.len())
+            .filter(|&k| s.on_surface[k] && s.pos[k].x >= y_from && s.pos[k].x <= c.hi.x)
+            .map(|k| s.pos[k].y)
+            .fold(f64::NEG_INFINITY, f64::max)
+            + 0.5 * g.dx_f
+    };
+    // A plunge closes the cavity against the free surface in front of the wave: the cavity reaches down
+    // into the lower part of the wave. Loops folded within a thin sheet high on the crest are not plunges.
+    let c = cavities
+        .into_iter()
+        .find(|c| c.lo.y < PLUNGE_CAVITY_DEPTH * crest_of(c) && was_open(c))?;
+    let crest = crest_of(&c);
+    let u = g.fr;
+    let idx = jet::jet_particles(s, &ls, &c);
+    let m = jet::metrics(s, &ls, &idx)?;
+    let x = scene.profile.x_at(t);
+    let gamma = cavity::circulation(s, &ls, &c);
+    let pm = PlungeMetrics {
+        x_plunge_over_l: x,
+        y_plunge_over_l: c.rightmost.x,
+        fr_x: u / (x - scene.profile.hull.x_range.0).max(1e-12).sqrt(),
+        h_pj_over_d: crest / g.draft,
+        fall_over_d: (crest - c.rightmost.y) / g.draft,
+        gamma_over_ud: gamma / (u * g.draft),
+        cavity_area_over_d2: c.area / (g.draft * g.draft),
+        l_jet_over_d: m.length / g.draft,
+        s_jet_over_db: m.area / (g.draft * g.beam),
+        i_og_over_s2: m.i_og / (m.area * m.area),
+        y_g_over_d: m.y_g / g.draft,
+        z_g_over_d: m.z_g / g.draft,
+        v_g_over_u: m.v_g / u,
+        w_g_over_u: m.w_g / u,
+        alpha_g_deg: m.alpha_g_deg,
+        alpha_vg_deg: m.alpha_vg_deg,
+        jet_particles: m.particles,
+    };
+    Some((pm, ls, c))
+}
+
+/// Free-surface elevation η(y) as the top of the fluid in bins of `bin` across [0, width] (NaN where empty).
+fn eta_profile(pos: &[V2], width: f64, bin: f64, dx: f64) -> Vec<f64> {
+    let n = (width / bin).ceil() as usize;
+    let mut top = vec![f64::NAN; n];
+    for p in pos {
+        let k = ((p.x / bin) as usize).min(n - 1);
+        if top[k].is_nan() || p.y > top[k] {
+            top[k] = p.y;
+        }
+    }
+    top.iter().map(|z| z + 0.5 * dx).collect()
+}
+
+/// Runs a case and writes its outputs into `opts.out_dir`.
+pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> anyhow::Result<TwoDtResult> {
+    let clock = Instant::now();
+    let cpu0 = cpu_seconds();
+    let mut scene = build(hull.clone(), cfg)?;
+    let g = scene.geom.clone();
+    let n = scene.sim.n_fluid();
+    std::fs::create_dir_all(&opts.out_dir)
+        .map_err(|e| anyhow::anyhow!("cannot create output directory {}: {e}", opts.out_dir.display()))?;
+    let total_mass: f64 = scene.sim.fluid.mass.iter().sum();
+    let t_start = scene.profile.t_start;
+
+    // 1. Damped settling: the section stands still at x0, velocities are damped at every step.
+    while scene.sim.time < t_start {
+        scene.sim.step().map_err(|b| anyhow::anyhow!("settling blew up: {b}"))?;
+        for v in scene.sim.fluid.vel.iter_mut() {
+            *v *= 0.9;
+        }
+    }
+    let ke = |sim: &crate::sph::solver::Simulation<2>| -> f64 {
+        sim.fluid
+            .vel
+            .iter()
+            .zip(&sim.fluid.mass)
+            .map(|(v, m)| 0.5 * m * v.norm_squared())
+            .sum()
+    };
+    let ke_after_settle = ke(&scene.sim) / (total_mass * g.draft);
+    log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
+
+    // 2. The passage.
+    let bar = opts.progress.then(|| {
+        let b = indicatif::ProgressBar::new(1000);
+        b.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} x/L = {msg} [{elapsed_precise} / eta {eta_precise}]")
+                .expect("valid template"),
+        );
+        b
+    });
+    let mut series = Table::new(
+        [
+            "x_over_l",
+            "t",
+            "steps",
+            "ke_over_mgd",
+            "max_mach",
+            "far_eta_over_d",
+            "surface_particles",
+            "wall_corrections",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect(),
+    );
+    let mut eta_table = Table::new(vec!["x_over_l".into(), "y_over_l".into(), "eta_over_d".into()]);
+    let bin = 4.0 * g.dx_f;
+    let eta0 = eta_profile(&scene.sim.fluid.pos, g.width, bin, g.dx_f);
+    let far_from = (0.75 * g.width / bin) as usize;
+    let far_ref: f64 = {
+        let v: Vec<f64> = eta0[far_from..].iter().copied().filter(|z| z.is_finite()).collect();
+        v.iter().sum::<f64>() / v.len().max(1) as f64
+    };
+    let mut far_eta = 0.0f64;
+    let mut max_mach = 0.0f64;
+    let mut plunge: Option<PlungeMetrics> = None;
+    let mut previous_air: PreviousAir = None;
+    let mut x_stop = match cfg.until {
+        Until::Plunge | Until::Transom => hull.x_range.1.min(g.x_end),
+        Until::X(x) => x,
+    };
+    let mut next_output = g.x0;
+    let mut vtk_frames: Vec<(f64, String)> = vec![];
+    let mut blowup = None;
+    let steps0 = scene.sim.steps;
+    loop {
+        let x = scene.profile.x_at(scene.sim.time);
+        let detect = (scene.sim.steps - steps0) % cfg.detect_every.max(1) as u64 == 0;
+        let output = x >= next_output;
+        if detect || output || x >= x_stop {
+            let s = snapshot(&mut scene);
+            let umax = s.vel.iter().map(|v| v.norm()).fold(0.0, f64::max);
+            let mach = umax / g.c0;
+            if mach > 0.1 && max_mach <= 0.1 {
+                log::warn!("Mach number {mach:.3} above 0.1 at x/L = {x:.4}: raise c0 (--c0)");
+            }
+            max_mach = max_mach.max(mach);
+            let eta = eta_profile(&s.pos, g.width, bin, g.dx_f);
+            if plunge.is_none() {
+                let far = eta[far_from..]
+                    .iter()
+                    .filter(|z| z.is_finite())
+                    .map(|z| (z - far_ref).abs())
+                    .fold(0.0, f64::max);
+                far_eta = far_eta.max(far / g.draft);
+                if let Some((pm, ls, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
+                    log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
+                    if opts.plots {
+                        plunge_plots(&scene, &s, &ls, &c, &opts.out_dir)?;
+                    }
+                    if cfg.until == Until::Plunge {
+                        x_stop = x_stop.min(pm.x_plunge_over_l + cfg.after_plunge);
+                    }
+                    plunge = Some(pm);
+                }
+            }
+            if output || x >= x_stop {
+                next_output += cfg.output_dx;
+                series.push(vec![
+                    x,
+                    scene.sim.time - t_start,
+                    scene.sim.steps as f64,
+                    ke(&scene.sim) / (total_mass * g.draft),
+                    mach,
+                    far_eta,
+                    s.on_surface.iter().filter(|b| **b).count() as f64,
+                    scene.sim.wall_corrections as f64,
+                ]);
+                for (k, z) in eta.iter().enumerate() {
+                    if z.is_finite() {
+                        eta_table.push(vec![x, (k as f64 + 0.5) * bin, z / g.draft]);
+                    }
+                }
+                if opts.frames {
+                    let path = opts.out_dir.join(format!("frame_{:04}.png", series.rows.len()));
+                    depth_plot(
+                        &scene,
+                        &s,
+                        &path,
+                        (0.0, 2.0 * g.beam, -g.draft, 2.5 * g.draft),
+                        &format!("x/L = {x:.4}"),
+                    )?;
+                }
+                if opts.vtk {
+                    let name = format!("frame_{:05}.vtp", vtk_frames.len());
+                    write_frame(&scene, &s, &opts.out_dir.join(&name))?;
+                    vtk_frames.push((x, name));
+                }
+            }
+            if let Some(b) = &bar {
+                b.set_position((1000.0 * (x - g.x0) / (x_stop - g.x0)).clamp(0.0, 1000.0) as u64);
+                b.set_message(format!("{x:.4}"));
+            }
+        }
+        if x >= x_stop {
+            break;
+        }
+        if let Err(b) = scene.sim.step() {
+            blowup = Some(b.to_string());
+            break;
+        }
+    }
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    let mass_end: f64 = scene.sim.fluid.mass.iter().sum();
+    let result = TwoDtResult {
+        hull: hull.meta.name.clone(),
+        fr: cfg.fr,
+        dx_over_l: g.dx_f,
+        dx_coarse_over_l: g.dx_c,
+        c0_over_sqrt_gl: g.c0,
+        particles: n,
+        steps: scene.sim.steps,
+        wall_seconds: clock.elapsed().as_secs_f64(),
+        cpu_seconds: cpu_seconds() - cpu0,
+        x_end_over_l: scene.profile.x_at(scene.sim.time),
+        ke_after_settle,
+        far_field_eta_over_d: far_eta,
+        max_mach,
+        mass_change: (mass_end - total_mass) / total_mass,
+        wall_corrections: scene.sim.wall_corrections,
+        plunged: plunge.is_some(),
+        plunge,
+        blowup,
+    };
+    series.write(&opts.out_dir.join("series.csv"))?;
+    eta_table.write(&opts.out_dir.join("eta.csv"))?;
+    if opts.vtk {
+        vtk::write_pvd(&opts.out_dir.join("series.pvd"), &vtk_frames)?;
+    }
+    write_atomic(
+        &opts.out_dir.join("metrics.json"),
+        serde_json::to_string_pretty(&result)?.as_bytes(),
+    )?;
+    write_atomic(
+        &opts.out_dir.join("metrics.csv"),
+        metrics_csv(std::slice::from_ref(&result)).as_bytes(),
+    )?;
+    Ok(result)
+}
+
+/// The metrics rows as CSV (one row per result, plunge fields empty when there was no plunge).
+pub fn metrics_csv(results: &[TwoDtResult]) -> String {
+    let mut out = String::from(
+        "hull,fr,dx_over_l,dx_coarse_over_l,particles,steps,cpu_s,wall_s,plunged,x_plunge_over_l,y_plunge_over_l,\
+         fr_x,h_pj_over_d,fall_over_d,gamma_over_ud,cavity_area_over_d2,l_jet_over_d,s_jet_over_db,i_og_over_s2,\
+         y_g_over_d,z_g_over_d,v_g_over_u,w_g_over_u,alpha_g_deg,alpha_vg_deg,ke_after_settle,\
+         far_field_eta_over_d,max_mach,mass_change,blowup\n",
+    );
+    for r in results {
+        out += &format!(
+            "{},{},{:.4e},{:.4e},{},{},{:.1},{:.1},{},",
+            r.hull,
+            r.fr,
+            r.dx_over_l,
+            r.dx_coarse_over_l,
+            r.particles,
+            r.steps,
+            r.cpu_seconds,
+            r.wall_seconds,
+            r.plunged
+        );
+        match &r.plunge {
+            Some(p) => {
+                out += &format!(
+                    "{:.5},{:.5},{:.4},{:.4},{:.4},{:.4},{:.5},{:.4},{:.5},{:.4},{:.4},{:.4},{:.4},{:.4},{:.2},{:.2},",
+                    p.x_plunge_over_l,
+                    p.y_plunge_over_l,
+                    p.fr_x,
+                    p.h_pj_over_d,
+                    p.fall_over_d,
+                    p.gamma_over_ud,
+                    p.cavity_area_over_d2,
+                    p.l_jet_over_d,
+                    p.s_jet_over_db,
+                    p.i_og_over_s2,
+                    p.y_g_over_d,
+                    p.z_g_over_d,
+                    p.v_g_over_u,
+                    p.w_g_over_u,
+                    p.alpha_g_deg,
+                    p.alpha_vg_deg
+                )
+            }
+            None => out += &",".repeat(16),
+        }
+        out += &format!(
+            "{:.3e},{:.3e},{:.4},{:.3e},{}\n",
+            r.ke_after_settle,
+            r.far_field_eta_over_d,
+            r.max_mach,
+            r.mass_change,
+            r.blowup.as_deref().unwrap_or("").replace(',', ";")
+        );
+    }
+    out
+}
+
+fn write_frame(scene: &Scene, s: &Snapshot, path: &Path) -> anyhow::Result<()> {
+    let f = &scene.sim.fluid;
+    let pts: Vec<[f64; 3]> = f.pos.iter().map(|p| [p.x, p.y, 0.0]).collect();
+    let data = vec![
+        vtk::PointData::Scalar("pressure", scene.sim.pressure().to_vec()),
+        vtk::PointData::Scalar("initial_depth", f.tag.clone()),
+        vtk::PointData::Scalar("free_surface", s.on_surface.iter().map(|b| *b as u8 as f64).collect()),
+        vtk::PointData::Vector("velocity", f.vel.iter().map(|v| [v.x, v.y, 0.0]).collect()),
+    ];
+    vtk::write_vtp(path, &pts, &data)?;
+    Ok(())
+}
+
+/// PNG snapshots at the plunge: pressure, and initial depth with the two top rows marked (thesis Fig. 10.7).
+fn plunge_plots(
+    scene: &Scene,
+    s: &Snapshot,
+    ls: &level_set::LevelSet,
+    c: &cavity::Cavity,
+    dir: &Path,
+) -> anyhow::Result<()> {
+    let g = &scene.geom;
+    let span = (c.hi.x - 0.0).max(g.draft) * 1.3;
+    let range = (0.0, span, -0.6 * g.draft, (c.hi.y + 1.2 * g.draft).min(g.z_top));
+    let _ = ls;
+    let pts: Vec<(f64, f64)> = s.pos.iter().map(|p| (p.x, p.y)).collect();
+    let wall: Vec<(f64, f64)> = scene
+        .profile
+        .at(scene.sim.time)
+        .points
+        .iter()
+        .map(|p| (p.x, p.y))
+        .collect();
+    let p: Vec<f64> = scene.sim.pressure().iter().map(|p| p / g.draft).collect();
+    plot::scatter_plot(
+        &dir.join("plunge_pressure.png"),
+        "pressure p/(ρ g D) at the plunge",
+        &pts,
+        &p,
+        (0.0, 1.0),
+        std::slice::from_ref(&wall),
+        range,
+        1400,
+    )?;
+    depth_plot(
+        scene,
+        s,
+        &dir.join("plunge_initial_depth.png"),
+        range,
+        "initial depth / D (top two rows marked red and yellow)",
+    )
+}
+
+/// Particles coloured by their initial depth, the two top rows marked (thesis Fig. 10.7).
+fn depth_plot(
+    scene: &Scene,
+    s: &Snapshot,
+    path: &Path,
+    range: (f64, f64, f64, f64),
+    title: &str,
+) -> anyhow::Result<()> {
+    let g = &scene.geom;
+    let pts: Vec<(f64, f64)> = s.pos.iter().map(|p| (p.x, p.y)).collect();
+    let wall: Vec<(f64, f64)> = scene
+        .profile
+        .at(scene.sim.time)
+        .points
+        .iter()
+        .map(|p| (p.x, p.y))
+        .collect();
+    let ids = &scene.sim.fluid.id;
+    let marks: Vec<f64> = ids
+        .iter()
+        .map(|&id| match scene.initial_row[id as usize] {
+            0 => 1.0,
+            1 => 0.75,
+            _ => (scene.initial_depth[id as usize] / g.draft).min(0.5),
+        })
+        .collect();
+    plot::scatter_plot(
+        path,
+        title,
+        &pts,
+        &marks,
+        (0.0, 1.0),
+        std::slice::from_ref(&wall),
+        range,
+        1400,
+    )?;
+    Ok(())
+}
