@@ -92,6 +92,16 @@ enum Command {
         #[arg(long, short)]
         quiet: bool,
     },
+    /// The wedge check of the 2D+t machinery: a hull of wedge sections sinking linearly in x against a rigid
+    /// wedge entering at the same speed, both against Wagner theory; prints pile-up height and force.
+    Wedge {
+        /// Particle spacing dx/L (the penetration at the end is 0.03 L).
+        #[arg(long, default_value_t = 5e-4)]
+        dx: f64,
+        /// Deadrise angle in degrees.
+        #[arg(long, default_value_t = 30.0)]
+        deadrise: f64,
+    },
     /// Measure throughput (particle-steps per second) on the dam break.
     Bench {
         /// Resolutions H/dx, comma separated.
@@ -207,6 +217,15 @@ fn run() -> anyhow::Result<()> {
             .context("setting the thread count")?;
     }
     match cli.command {
+        Command::Wedge { dx, deadrise } => {
+            let spec = bowwave::twodt::wedge::WedgeSpec {
+                dx,
+                deadrise_deg: deadrise,
+                ..Default::default()
+            };
+            let c = bowwave::twodt::wedge::compare(&spec, &[0.01, 0.02, 0.03])?;
+            bowwave::twodt::wedge::print(&c);
+        }
         Command::Twodt {
             hull,
             fr,
