@@ -203,7 +203,7 @@ fn elliptic_cavity_of_minor_axis_2h_is_detected() {
     let in_cavity = |p: &V2| (p.x / ca).powi(2) + (p.y / cb).powi(2) < 1.0;
     let inside = |p: &V2| (p.x / a).powi(2) + (p.y / b).powi(2) < 1.0 && !in_cavity(p);
     let pos = lattice(dx, V2::new(-a, -b), V2::new(a, b), inside);
-    let s = snapshot(pos, vec![V2::zeros(); 0], dx);
+    let s = snapshot(pos, Vec::new(), dx);
     let (mut rim, mut rim_found, mut deep_found) = (0, 0, 0);
     for k in 0..s.len() {
         let p = s.pos[k];
