@@ -300,10 +300,10 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                     .map(|z| (z - far_ref).abs())
                     .fold(0.0, f64::max);
                 far_eta = far_eta.max(far / g.draft);
-                if let Some((pm, ls, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
+                if let Some((pm, _, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
-                        plunge_plots(&scene, &s, &ls, &c, &opts.out_dir)?;
+                        plunge_plots(&scene, &s, &c, &opts.out_dir)?;
                     }
                     if cfg.until == Until::Plunge {
                         x_stop = x_stop.min(pm.x_plunge_over_l + cfg.after_plunge);
@@ -397,61 +397,54 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     Ok(result)
 }
 
-/// The metrics rows as CSV (one row per result, plunge fields empty when there was no plunge).
+/// The metrics rows as CSV: the fields of [`TwoDtResult`] in order, those of the plunge flattened in place
+/// (empty when there was no plunge). One header for all rows, taken from a result with a plunge.
 pub fn metrics_csv(results: &[TwoDtResult]) -> String {
-    let mut out = String::from(
-        "hull,fr,dx_over_l,dx_coarse_over_l,particles,steps,cpu_s,wall_s,plunged,x_plunge_over_l,y_plunge_over_l,\
-         fr_x,h_pj_over_d,fall_over_d,gamma_over_ud,cavity_area_over_d2,l_jet_over_d,s_jet_over_db,i_og_over_s2,\
-         y_g_over_d,z_g_over_d,v_g_over_u,w_g_over_u,alpha_g_deg,alpha_vg_deg,ke_after_settle,\
-         far_field_eta_over_d,max_mach,mass_change,blowup\n",
-    );
-    for r in results {
-        out += &format!(
-            "{},{},{:.4e},{:.4e},{},{},{:.1},{:.1},{},",
-            r.hull,
-            r.fr,
-            r.dx_over_l,
-            r.dx_coarse_over_l,
-            r.particles,
-            r.steps,
-            r.cpu_seconds,
-            r.wall_seconds,
-            r.plunged
-        );
-        match &r.plunge {
-            Some(p) => {
-                out += &format!(
-                    "{:.5},{:.5},{:.4},{:.4},{:.4},{:.4},{:.5},{:.4},{:.5},{:.4},{:.4},{:.4},{:.4},{:.4},{:.2},{:.2},",
-                    p.x_plunge_over_l,
-                    p.y_plunge_over_l,
-                    p.fr_x,
-                    p.h_pj_over_d,
-                    p.fall_over_d,
-                    p.gamma_over_ud,
-                    p.cavity_area_over_d2,
-                    p.l_jet_over_d,
-                    p.s_jet_over_db,
-                    p.i_og_over_s2,
-                    p.y_g_over_d,
-                    p.z_g_over_d,
-                    p.v_g_over_u,
-                    p.w_g_over_u,
-                    p.alpha_g_deg,
-                    p.alpha_vg_deg
-                )
+    let flat = |r: &TwoDtResult| -> Vec<(String, String)> {
+        let mut r = r.clone();
+        let plunged = r.plunge.is_some();
+        let p = r.plunge.take().unwrap_or_default();
+        let v = serde_json::to_value(&r).expect("serialisable");
+        let pv = serde_json::to_value(&p).expect("serialisable");
+        let cell = |x: &serde_json::Value| match x {
+            serde_json::Value::String(s) => s.replace(',', ";"),
+            serde_json::Value::Null => String::new(),
+            other => other.to_string(),
+        };
+        let mut out = vec![];
+        for (k, x) in v.as_object().expect("object") {
+            if k == "plunge" {
+                for (pk, px) in pv.as_object().expect("object") {
+                    out.push((pk.clone(), if plunged { cell(px) } else { String::new() }));
+                }
+            } else {
+                out.push((k.clone(), cell(x)));
             }
-            None => out += &",".repeat(16),
         }
-        out += &format!(
-            "{:.3e},{:.3e},{:.4},{:.3e},{}\n",
-            r.ke_after_settle,
-            r.far_field_eta_over_d,
-            r.max_mach,
-            r.mass_change,
-            r.blowup.as_deref().unwrap_or("").replace(',', ";")
-        );
+        out
+    };
+    let rows: Vec<Vec<(String, String)>> = results.iter().map(flat).collect();
+    let Some(first) = rows.first() else {
+        return String::new();
+    };
+    let mut out = first.iter().map(|c| c.0.as_str()).collect::<Vec<_>>().join(",") + "\n";
+    for r in &rows {
+        out += &(r.iter().map(|c| c.1.as_str()).collect::<Vec<_>>().join(",") + "\n");
     }
     out
+}
+
+/// Particle positions and the current wall polyline, for plots.
+fn plot_points(scene: &Scene, s: &Snapshot) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+    let pts = s.pos.iter().map(|p| (p.x, p.y)).collect();
+    let wall = scene
+        .profile
+        .at(scene.sim.time)
+        .points
+        .iter()
+        .map(|p| (p.x, p.y))
+        .collect();
+    (pts, wall)
 }
 
 fn write_frame(scene: &Scene, s: &Snapshot, path: &Path) -> anyhow::Result<()> {
@@ -468,25 +461,11 @@ fn write_frame(scene: &Scene, s: &Snapshot, path: &Path) -> anyhow::Result<()> {
 }
 
 /// PNG snapshots at the plunge: pressure, and initial depth with the two top rows marked (thesis Fig. 10.7).
-fn plunge_plots(
-    scene: &Scene,
-    s: &Snapshot,
-    ls: &level_set::LevelSet,
-    c: &cavity::Cavity,
-    dir: &Path,
-) -> anyhow::Result<()> {
+fn plunge_plots(scene: &Scene, s: &Snapshot, c: &cavity::Cavity, dir: &Path) -> anyhow::Result<()> {
     let g = &scene.geom;
     let span = (c.hi.x - 0.0).max(g.draft) * 1.3;
     let range = (0.0, span, -0.6 * g.draft, (c.hi.y + 1.2 * g.draft).min(g.z_top));
-    let _ = ls;
-    let pts: Vec<(f64, f64)> = s.pos.iter().map(|p| (p.x, p.y)).collect();
-    let wall: Vec<(f64, f64)> = scene
-        .profile
-        .at(scene.sim.time)
-        .points
-        .iter()
-        .map(|p| (p.x, p.y))
-        .collect();
+    let (pts, wall) = plot_points(scene, s);
     let p: Vec<f64> = scene.sim.pressure().iter().map(|p| p / g.draft).collect();
     plot::scatter_plot(
         &dir.join("plunge_pressure.png"),
@@ -516,14 +495,7 @@ fn depth_plot(
     title: &str,
 ) -> anyhow::Result<()> {
     let g = &scene.geom;
-    let pts: Vec<(f64, f64)> = s.pos.iter().map(|p| (p.x, p.y)).collect();
-    let wall: Vec<(f64, f64)> = scene
-        .profile
-        .at(scene.sim.time)
-        .points
-        .iter()
-        .map(|p| (p.x, p.y))
-        .collect();
+    let (pts, wall) = plot_points(scene, s);
     let ids = &scene.sim.fluid.id;
     let marks: Vec<f64> = ids
         .iter()
