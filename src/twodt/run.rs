@@ -434,8 +434,11 @@ pub fn metrics_csv(results: &[TwoDtResult]) -> String {
     out
 }
 
+/// Points of a plot.
+type PlotPoints = Vec<(f64, f64)>;
+
 /// Particle positions and the current wall polyline, for plots.
-fn plot_points(scene: &Scene, s: &Snapshot) -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+fn plot_points(scene: &Scene, s: &Snapshot) -> (PlotPoints, PlotPoints) {
     let pts = s.pos.iter().map(|p| (p.x, p.y)).collect();
     let wall = scene
         .profile
