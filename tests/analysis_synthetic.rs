@@ -228,3 +228,30 @@ fn elliptic_cavity_of_minor_axis_2h_is_detected() {
     assert_eq!(cavities.len(), 1, "cavities found: {}", cavities.len());
     assert!(cavities[0].centroid.norm() < dx, "cavity at {:?}", cavities[0].centroid);
 }
+
+/// Regression: a run at dx/L = 1e-3 reported a "plunge" that was a hole opening inside a stretched sheet
+/// of particles. A plunge traps air that was atmosphere before; such a hole was fluid. Here the same
+/// cavity (a hole in a pool) is scored against an earlier state where it was fluid (fraction 0) and one
+/// where the pool was open above it, a notch reaching the atmosphere (fraction 1).
+#[test]
+fn hole_in_a_stretched_sheet_is_not_a_plunge() {
+    let dx = 0.02;
+    let centre = V2::new(0.5, 0.3);
+    let hole = |p: &V2| (p - centre).norm() < 0.12;
+    let notch = |p: &V2| (p.x - centre.x).abs() < 0.12 && p.y > centre.y - 0.12;
+    let box_ = (V2::new(-0.1, -0.1), V2::new(1.1, 0.7));
+    let pool = |keep: &dyn Fn(&V2) -> bool| {
+        let pos = lattice(dx, V2::zeros(), V2::new(1.0, 0.5), |p| keep(p));
+        let s = snapshot(pos, Vec::new(), dx);
+        level_set::level_set(&s, box_.0, box_.1, dx)
+    };
+    let now = pool(&|p| !hole(p));
+    let cavities = cavity::find_cavities(&now, 0.0, |_| true);
+    assert_eq!(cavities.len(), 1);
+    let full = pool(&|_| true);
+    let open = pool(&|p| !notch(p));
+    let f_full = cavity::trapped_fraction(&now, &cavities[0], &full, &cavity::atmosphere_mask(&full));
+    let f_open = cavity::trapped_fraction(&now, &cavities[0], &open, &cavity::atmosphere_mask(&open));
+    assert_eq!(f_full, 0.0);
+    assert!(f_open > 0.9, "fraction {f_open}");
+}

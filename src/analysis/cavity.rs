@@ -165,6 +165,17 @@ pub fn is_atmosphere(ls: &LevelSet, mask: &[bool], p: &V2) -> bool {
     mask[j as usize * ls.ny + i as usize]
 }
 
+/// Share of the cavity's nodes that were atmosphere in an earlier level set (`earlier`, with its mask from
+/// [`atmosphere_mask`]). A plunge traps air that was open; a hole that opens inside the fluid was not.
+pub fn trapped_fraction(ls: &LevelSet, cavity: &Cavity, earlier: &LevelSet, earlier_mask: &[bool]) -> f64 {
+    let open = cavity
+        .nodes
+        .iter()
+        .filter(|&&(i, j)| is_atmosphere(earlier, earlier_mask, &ls.node(i, j)))
+        .count();
+    open as f64 / cavity.nodes.len().max(1) as f64
+}
+
 /// Velocity at `x` by first-order MLS from the fluid particles within the kernel support (Shepard where
 /// the fit is ill-conditioned); `None` when no particle is near.
 pub fn velocity_at(s: &Snapshot, cells: &crate::sph::neighbours::CellList<2>, x: &V2) -> Option<V2> {

@@ -86,3 +86,47 @@ impl SectionProfile {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::wigley::{wigley, WigleySpec};
+
+    /// The vertices of the section move with a normal velocity equal to w_n of eq. (10.4), and the wall runs
+    /// from the symmetry plane through the keel to the top.
+    #[test]
+    fn section_vertices_move_with_the_expansion_velocity() {
+        let hull = Arc::new(HullSurface::new(&wigley(&WigleySpec::default())));
+        let prof = SectionProfile {
+            hull: hull.clone(),
+            u: 0.5,
+            x0: 0.1,
+            ds: 2e-3,
+            z_cut: -0.15,
+            z_top: 0.1,
+            t_start: 0.0,
+        };
+        let t = 0.2; // x = 0.2
+        let p = prof.at(t);
+        assert_eq!(p.points[0], V2::new(0.0, -0.15));
+        assert!((p.points.last().unwrap().y - 0.1).abs() < 1e-12);
+        let samples = hull.section(prof.x_at(t), prof.ds).unwrap();
+        for s in samples.iter().skip(1).take(samples.len() - 2) {
+            let k = p
+                .points
+                .iter()
+                .position(|q| (q - V2::new(s.y, s.z)).norm() < 1e-12)
+                .expect("sample is a vertex");
+            let n = V2::new(s.normal[0], s.normal[1]);
+            let wn = p.motion.vel[k].dot(&n);
+            assert!(
+                (wn - prof.u * s.w_n_over_u).abs() < 1e-12,
+                "w_n {wn} vs {}",
+                prof.u * s.w_n_over_u
+            );
+        }
+        // Before the ship starts, the wall stands still.
+        let still = SectionProfile { t_start: 1.0, ..prof };
+        assert!(still.at(0.5).motion.vel.iter().all(|v| v.norm() == 0.0));
+    }
+}

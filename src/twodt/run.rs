@@ -143,14 +143,7 @@ fn plunge_check(
     let prev = previous.take();
     *previous = Some((ls.clone(), cavity::atmosphere_mask(&ls)));
     let (pls, pmask) = prev?;
-    let was_open = |c: &cavity::Cavity| {
-        let open = c
-            .nodes
-            .iter()
-            .filter(|&&(i, j)| cavity::is_atmosphere(&pls, &pmask, &ls.node(i, j)))
-            .count();
-        open as f64 >= TRAPPED_FRACTION * c.nodes.len() as f64
-    };
+    let was_open = |c: &cavity::Cavity| cavity::trapped_fraction(&ls, c, &pls, &pmask) >= TRAPPED_FRACTION;
     // Crest: the highest free-surface particle over the cavity or up to one cavity width before it.
     let crest_of = |c: &cavity::Cavity| {
         let y_from = c.lo.x - (c.hi.x - c.lo.x);
