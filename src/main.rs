@@ -64,8 +64,9 @@ enum Command {
         /// bow-wave height estimated from Table 10.1 of the thesis).
         #[arg(long)]
         dx: Option<f64>,
-        /// Coarse spacing below the transition, as a multiple of dx (constant h; 1 = uniform).
-        #[arg(long, default_value_t = 1.5)]
+        /// Coarse spacing below the transition, as a multiple of dx (constant h; 1 = uniform, the default: the
+        /// graded rows are not yet relaxed well enough, see docs/twodt.md).
+        #[arg(long, default_value_t = 1.0)]
         ratio: f64,
         /// Where to stop: `plunge` (shortly after it), `transom`, or an x/L value (e.g. 1.3 for stern waves).
         #[arg(long, default_value = "plunge")]
@@ -85,6 +86,13 @@ enum Command {
         /// Write VTK frames (.vtp + .pvd).
         #[arg(long)]
         vtk: bool,
+        /// x/L of the section at the start (default: the stem). A value before the stem runs the tank alone
+        /// until the stem arrives.
+        #[arg(long)]
+        x0: Option<f64>,
+        /// Damped settling before the ship starts, in acoustic crossings of the depth (Z/c0).
+        #[arg(long, default_value_t = 4.0)]
+        settle: f64,
         /// Write a PNG of the bow region at every output.
         #[arg(long)]
         frames: bool,
@@ -239,6 +247,8 @@ fn run() -> anyhow::Result<()> {
             vtk,
             frames,
             quiet,
+            x0,
+            settle,
         } => {
             let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
             let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
@@ -250,6 +260,8 @@ fn run() -> anyhow::Result<()> {
                 c0,
                 detect_every,
                 output_dx,
+                x0,
+                settle_crossings: settle,
                 ..Default::default()
             };
             let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("twodt-{}-fr{fr}", offsets.meta.name)));

@@ -29,7 +29,9 @@ impl Profile {
 /// The shape of the wall as a function of time.
 pub type ProfileFn = dyn Fn(f64) -> Profile + Send + Sync;
 
-/// A deforming polyline wall.
+/// A deforming polyline wall. Its ghosts are sampled from its first point on (`anchor_start`), so a wall
+/// whose start continues a fixed wall ending half a spacing before it keeps that wall's ghost lattice across
+/// the junction.
 pub struct DeformingWall {
     pub name: String,
     profile: Box<ProfileFn>,
@@ -93,7 +95,7 @@ impl Boundary<2> for DeformingWall {
     }
     fn ghosts(&self, t: f64, out: &mut GhostGeometry<2>) {
         let p = self.profile_at(t);
-        let g = ghost_layers_moving(&p.points, Some(&p.motion), self.side, self.ds, self.support);
+        let g = ghost_layers_moving(&p.points, Some(&p.motion), self.side, self.ds, self.support, true);
         out.append(&g);
     }
     fn keep_out(&self, t: f64, x: &mut V2, u: &mut V2) -> bool {

@@ -196,8 +196,10 @@ fn point_at(chain: &[V2], cum: &[f64], s: f64) -> V2 {
     chain[k - 1] + (chain[k] - chain[k - 1]) * f
 }
 
-/// Samples one offset profile at spacing ds, chain by chain (see module doc).
-fn sample_offset(q: &[V2], normals: &[V2], ds: f64) -> Vec<V2> {
+/// Samples one offset profile at spacing ds, chain by chain (see module doc). With `anchor_start` the first
+/// chain is sampled from the polyline's first point even when it ends at a corner (evenly, at the spacing
+/// nearest ds that fits), so a wall that continues another one at its start keeps the other's lattice.
+fn sample_offset(q: &[V2], normals: &[V2], ds: f64, anchor_start: bool) -> Vec<V2> {
     let n = q.len();
     let mut breaks = vec![0usize];
     for k in 1..n - 1 {
@@ -226,6 +228,10 @@ fn sample_offset(q: &[V2], normals: &[V2], ds: f64) -> Vec<V2> {
             (true, false) | (false, false) => {
                 let m = ((len + eps) / ds).floor() as usize;
                 (0..=m).map(|k| k as f64 * ds).collect()
+            }
+            (false, true) if anchor_start => {
+                let m = ((len / ds).round() as usize).max(1);
+                (0..m).map(|k| k as f64 * len / m as f64).collect()
             }
             (false, true) => {
                 let m = ((len + eps) / ds).floor() as usize;
@@ -275,18 +281,20 @@ pub struct VertexMotion {
 
 /// The ghost layers of a still polyline: offsets (k + ½) ds for all k with (k + ½) ds < support.
 pub fn ghost_layers(points: &[V2], side: FluidSide, ds: f64, support: f64) -> GhostGeometry<2> {
-    ghost_layers_moving(points, None, side, ds, support)
+    ghost_layers_moving(points, None, side, ds, support, false)
 }
 
 /// The ghost layers of a polyline whose vertices move with `motion` (a deforming wall, thesis §7.1.1:
 /// "the generation of the fixed ghost particles is repeated at each time step"). Ghosts whose foot is a
 /// corner vertex (turn above 30°) mirror through that point (Fig. 7.3); all others through the wall.
+/// `anchor_start`: sample from the first point (see [`sample_offset`]), for a wall that continues another.
 pub fn ghost_layers_moving(
     points: &[V2],
     motion: Option<&VertexMotion>,
     side: FluidSide,
     ds: f64,
     support: f64,
+    anchor_start: bool,
 ) -> GhostGeometry<2> {
     let mut g = GhostGeometry::default();
     if points.len() < 2 {
@@ -302,7 +310,7 @@ pub fn ghost_layers_moving(
     while (k as f64 + 0.5) * ds < support {
         let d = (k as f64 + 0.5) * ds;
         let q = offset_polyline(points, &normals, d);
-        samples.extend(sample_offset(&q, &normals, ds));
+        samples.extend(sample_offset(&q, &normals, ds, anchor_start));
         k += 1;
     }
     use rayon::prelude::*;

@@ -37,7 +37,9 @@ pub fn rows(z: f64, width: f64, dx_f: f64, dx_c: f64, d1: f64, d2: f64) -> Vec<R
     loop {
         let d = *depths.last().unwrap();
         let s = spacing_at(d, dx_f, dx_c, d1, d2);
-        if d + 1.5 * s > z {
+        // The last row should stand half a spacing above the bottom: add rows while the next one is nearer
+        // to that than the current one (d + s/2 < z − s/2), so the stretch below is at most s/2 overall.
+        if d + s >= z {
             break;
         }
         depths.push(d + s);

@@ -65,7 +65,8 @@ pub struct TwoDtResult {
     pub x_end_over_l: f64,
     /// Kinetic energy left by the settling, / (M g D).
     pub ke_after_settle: f64,
-    /// Largest |η| in the far field (y > 3W/4) up to the plunge (or the end), / D.
+    /// Largest change of the mean free-surface level of the far field (y > 3W/4) up to the plunge (or the
+    /// end), / D.
     pub far_field_eta_over_d: f64,
     /// Largest max|u|/c0 seen at the detection steps.
     pub max_mach: f64,
@@ -287,11 +288,9 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
             max_mach = max_mach.max(mach);
             let eta = eta_profile(&s.pos, g.width, bin, g.dx_f);
             if plunge.is_none() {
-                let far = eta[far_from..]
-                    .iter()
-                    .filter(|z| z.is_finite())
-                    .map(|z| (z - far_ref).abs())
-                    .fold(0.0, f64::max);
+                // The mean level of the far field (the top particles jitter by a tenth of a spacing).
+                let v: Vec<f64> = eta[far_from..].iter().copied().filter(|z| z.is_finite()).collect();
+                let far = (v.iter().sum::<f64>() / v.len().max(1) as f64 - far_ref).abs();
                 far_eta = far_eta.max(far / g.draft);
                 if let Some((pm, _, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
