@@ -171,8 +171,14 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
     // from the impulse: ∫F dt = C ρ V³ t²/2 for F = C ρ V³ t, which filters the SPH pressure noise.
     let mut impulse = 0.0;
     let mut last: Option<(f64, f64)> = None;
+    let tb = spec.tan_beta();
+    let dir = V2::new(1.0, tb).normalize();
+    let n = V2::new(tb, -1.0).normalize();
     for pen in targets {
         let t_target = t_touch + pen / v;
+        // Pressure moments along the side in the similarity variable s/(V t), summed over the last quarter
+        // of the interval: a single instant is too noisy for the centre of pressure.
+        let (mut m0, mut m1) = (0.0, 0.0);
         while scene.sim.time < t_target {
             scene
                 .sim
@@ -185,37 +191,42 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
                 let (t0, f0) = last.unwrap_or((0.0, 0.0));
                 impulse += 0.5 * (f + f0) * (t - t0);
                 last = Some((t, f));
+                if t > 0.75 * pen / v {
+                    let (a, b) = pressure_moments(&scene.sim, spec.dx, v * t, &dir, &n);
+                    m0 += a;
+                    m1 += b;
+                }
             }
         }
-        scene.sim.refresh();
         let t = scene.sim.time - t_touch;
-        // Pressure along the wedge side, one spacing into the fluid, from the apex up to 3 V t: its centre
-        // of pressure s_cp gives the Wagner-equivalent wetted length c = (π/2) s_cp (for p ∝ 1/√(c² − s²)),
-        // and the pile-up height c sinβ above the apex.
-        let tb = spec.tan_beta();
-        let za = -v * t;
-        let dir = V2::new(1.0, tb).normalize();
-        let n = V2::new(tb, -1.0).normalize();
-        let ds = 0.25 * spec.dx;
-        let (mut m0, mut m1) = (0.0, 0.0);
-        let steps = (3.0 * v * t / (dir.y * ds)) as usize + 1;
-        for k in 0..steps {
-            let s = (k as f64 + 0.5) * ds;
-            let p = V2::new(0.0, za) + dir * s + n * spec.dx;
-            if let Some(pr) = scene.sim.pressure_at(&p) {
-                let pr = pr.max(0.0);
-                m0 += pr * ds;
-                m1 += pr * s * ds;
-            }
-        }
-        let c = std::f64::consts::FRAC_PI_2 * m1 / m0.max(1e-300);
+        // The centre of pressure s_cp gives the Wagner-equivalent wetted length c = (π/2) s_cp (for
+        // p ∝ 1/√(c² − s²)), and the pile-up height c sinβ above the apex.
+        let c_over_vt = std::f64::consts::FRAC_PI_2 * m1 / m0.max(1e-300);
         out.push(WedgeSample {
             penetration: v * t,
-            pileup_over_vt: c * dir.y / (v * t),
+            pileup_over_vt: c_over_vt * dir.y,
             force_coefficient: 2.0 * impulse / (v * v * v * t * t),
         });
     }
     Ok(out)
+}
+
+/// Zeroth and first moments (∫p dσ, ∫p σ dσ with σ = s/(V t)) of the pressure along the wedge side, one
+/// spacing into the fluid, from the apex up to s = 3 V t / sinβ; `vt` is the penetration.
+fn pressure_moments(sim: &crate::sph::solver::Simulation<2>, dx: f64, vt: f64, dir: &V2, n: &V2) -> (f64, f64) {
+    let ds = 0.25 * dx;
+    let (mut m0, mut m1) = (0.0, 0.0);
+    let steps = (3.0 * vt / (dir.y * ds)) as usize + 1;
+    for k in 0..steps {
+        let s = (k as f64 + 0.5) * ds;
+        let p = V2::new(0.0, -vt) + dir * s + n * dx;
+        if let Some(pr) = sim.pressure_at(&p) {
+            let pr = pr.max(0.0);
+            m0 += pr * ds / vt;
+            m1 += pr * (s / vt) * ds / vt;
+        }
+    }
+    (m0, m1)
 }
 
 /// Runs both and returns the comparison.
