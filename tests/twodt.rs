@@ -43,24 +43,9 @@ fn wedge_sections_in_2dt_match_the_rigid_wedge() {
 /// written.
 #[test]
 fn athena_coarse_run_conserves_mass_and_keeps_the_far_field_calm() {
-    let hull = HullOffsets::read(std::path::Path::new("hulls/athena.csv")).expect("athena hull");
-    let surface = Arc::new(HullSurface::new(&hull));
-    let cfg = TwoDtConfig {
-        fr: 0.64,
-        dx: Some(2e-3),
-        until: Until::X(0.12),
-        output_dx: 0.02,
-        ..Default::default()
-    };
+    let cfg = athena_cfg(None, Until::X(0.12));
     let dir = std::env::temp_dir().join(format!("bowwave-twodt-test-{}", std::process::id()));
-    let opts = TwoDtOptions {
-        out_dir: dir.clone(),
-        progress: false,
-        vtk: true,
-        plots: true,
-        frames: false,
-    };
-    let r = run(surface, &cfg, &opts).expect("2D+t run");
+    let r = run(athena(), &cfg, &quiet_options(&dir, true)).expect("2D+t run");
     assert!(r.blowup.is_none(), "{:?}", r.blowup);
     assert!(r.mass_change.abs() < 1e-12, "mass change {}", r.mass_change);
     assert!(r.ke_after_settle < 1e-6, "E_K after settling {}", r.ke_after_settle);
@@ -76,6 +61,29 @@ fn athena_coarse_run_conserves_mass_and_keeps_the_far_field_calm() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Athena at Fr 0.64, dx/L = 2e-3, outputs every 0.02 L.
+fn athena_cfg(x0: Option<f64>, until: Until) -> TwoDtConfig {
+    TwoDtConfig {
+        fr: 0.64,
+        dx: Some(2e-3),
+        x0,
+        until,
+        output_dx: 0.02,
+        ..Default::default()
+    }
+}
+
+/// Outputs into `dir`, no progress bar; with `all`, VTK and plots too.
+fn quiet_options(dir: &std::path::Path, all: bool) -> TwoDtOptions {
+    TwoDtOptions {
+        out_dir: dir.to_path_buf(),
+        progress: false,
+        vtk: all,
+        plots: all,
+        frames: false,
+    }
+}
+
 fn athena() -> Arc<HullSurface> {
     let hull = HullOffsets::read(std::path::Path::new("hulls/athena.csv")).expect("athena hull");
     Arc::new(HullSurface::new(&hull))
@@ -86,23 +94,9 @@ fn athena() -> Arc<HullSurface> {
 /// 0.5 % of D.
 #[test]
 fn still_tank_before_the_stem_stays_at_rest() {
-    let cfg = TwoDtConfig {
-        fr: 0.64,
-        dx: Some(2e-3),
-        x0: Some(-0.4),
-        until: Until::X(-0.2),
-        output_dx: 0.02,
-        ..Default::default()
-    };
+    let cfg = athena_cfg(Some(-0.4), Until::X(-0.2));
     let dir = std::env::temp_dir().join(format!("bowwave-still-tank-{}", std::process::id()));
-    let opts = TwoDtOptions {
-        out_dir: dir.clone(),
-        progress: false,
-        vtk: false,
-        plots: false,
-        frames: false,
-    };
-    let r = run(athena(), &cfg, &opts).expect("still tank");
+    let r = run(athena(), &cfg, &quiet_options(&dir, false)).expect("still tank");
     let series = std::fs::read_to_string(dir.join("series.csv")).expect("series");
     let mut lines = series.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
