@@ -91,7 +91,7 @@ enum Command {
         #[arg(long)]
         x0: Option<f64>,
         /// Damped settling before the ship starts, in acoustic crossings of the depth (Z/c0).
-        #[arg(long, default_value_t = 4.0)]
+        #[arg(long, default_value_t = 1.0)]
         settle: f64,
         /// Write a PNG of the bow region at every output.
         #[arg(long)]
