@@ -60,7 +60,7 @@ fn cavity_around_a_point_vortex_has_its_circulation() {
         .collect();
     let s = snapshot(pos, vel, dx);
     let ls = level_set::level_set(&s, V2::new(-0.1, -0.1), V2::new(1.1, 1.1), dx);
-    let cavities = cavity::find_cavities(&ls, (2.0 * s.h).powi(2), |_| true);
+    let cavities = cavity::find_cavities(&ls, &cavity::atmosphere_mask(&ls), (2.0 * s.h).powi(2), |_| true);
     assert_eq!(cavities.len(), 1, "one enclosed cavity expected");
     let c = &cavities[0];
     assert!((c.centroid - centre).norm() < dx, "centroid {:?}", c.centroid);
@@ -90,7 +90,7 @@ fn rectangular_jet_over_a_cavity_has_the_slab_metrics() {
     let vel = pos.iter().map(|p| if p.y > z0 { u_jet } else { V2::zeros() }).collect();
     let s = snapshot(pos, vel, dx);
     let ls = level_set::level_set(&s, V2::new(-0.05, -0.55), V2::new(2.05, 1.0), dx);
-    let cavities = cavity::find_cavities(&ls, (2.0 * s.h).powi(2), |_| true);
+    let cavities = cavity::find_cavities(&ls, &cavity::atmosphere_mask(&ls), (2.0 * s.h).powi(2), |_| true);
     assert_eq!(cavities.len(), 1);
     let c = &cavities[0];
     let idx = jet::jet_particles(&s, &ls, c);
@@ -224,7 +224,7 @@ fn elliptic_cavity_of_minor_axis_2h_is_detected() {
     println!("cavity rim: {rim_found} of {rim} particles detected; interior false detections {deep_found}");
     assert_eq!(deep_found, 0);
     let ls = level_set::level_set(&s, V2::new(-1.1, -0.9), V2::new(1.1, 0.9), dx);
-    let cavities = cavity::find_cavities(&ls, 0.0, |_| true);
+    let cavities = cavity::find_cavities(&ls, &cavity::atmosphere_mask(&ls), 0.0, |_| true);
     assert_eq!(cavities.len(), 1, "cavities found: {}", cavities.len());
     assert!(cavities[0].centroid.norm() < dx, "cavity at {:?}", cavities[0].centroid);
 }
@@ -246,7 +246,7 @@ fn hole_in_a_stretched_sheet_is_not_a_plunge() {
         level_set::level_set(&s, box_.0, box_.1, dx)
     };
     let now = pool(&|p| !hole(p));
-    let cavities = cavity::find_cavities(&now, 0.0, |_| true);
+    let cavities = cavity::find_cavities(&now, &cavity::atmosphere_mask(&now), 0.0, |_| true);
     assert_eq!(cavities.len(), 1);
     let full = pool(&|_| true);
     let open = pool(&|p| !notch(p));

@@ -27,55 +27,58 @@ pub struct Cavity {
     pub hi: V2,
 }
 
-/// Finds the cavities of area at least `min_area`; `keep` rejects cavities by their nodes (e.g. air trapped
-/// against a wall). Sorted by decreasing area.
-pub fn find_cavities(ls: &LevelSet, min_area: f64, keep: impl Fn(&[V2]) -> bool) -> Vec<Cavity> {
+/// Floods the 4-connected air nodes reachable from `seeds` that are not yet `visited`, marks them visited
+/// and returns them (node index j·ny + i).
+fn flood(ls: &LevelSet, seeds: &[usize], visited: &mut [bool]) -> Vec<usize> {
     let (ny, nz) = (ls.ny, ls.nz);
-    // 0: fluid, 1: air not yet visited, 2: atmosphere or visited.
-    let mut state: Vec<u8> = (0..ny * nz)
-        .map(|k| if ls.is_air(k % ny, k / ny) { 1 } else { 0 })
-        .collect();
-    let flood = |state: &mut Vec<u8>, seed: usize| -> Vec<usize> {
-        let mut out = vec![];
-        let mut stack = vec![seed];
-        state[seed] = 2;
-        while let Some(k) = stack.pop() {
-            out.push(k);
-            let (i, j) = (k % ny, k / ny);
-            let mut push = |kk: usize| {
-                if state[kk] == 1 {
-                    state[kk] = 2;
-                    stack.push(kk);
-                }
-            };
-            if i > 0 {
-                push(k - 1);
-            }
-            if i + 1 < ny {
-                push(k + 1);
-            }
-            if j > 0 {
-                push(k - ny);
-            }
-            if j + 1 < nz {
-                push(k + ny);
-            }
-        }
-        out
-    };
-    for i in 0..ny {
-        let k = (nz - 1) * ny + i;
-        if state[k] == 1 {
-            flood(&mut state, k);
+    let is_air = |k: usize| ls.is_air(k % ny, k / ny);
+    let mut out = vec![];
+    let mut stack: Vec<usize> = vec![];
+    for &k in seeds {
+        if !visited[k] && is_air(k) {
+            visited[k] = true;
+            stack.push(k);
         }
     }
+    while let Some(k) = stack.pop() {
+        out.push(k);
+        let (i, j) = (k % ny, k / ny);
+        let mut next = [None; 4];
+        if i > 0 {
+            next[0] = Some(k - 1);
+        }
+        if i + 1 < ny {
+            next[1] = Some(k + 1);
+        }
+        if j > 0 {
+            next[2] = Some(k - ny);
+        }
+        if j + 1 < nz {
+            next[3] = Some(k + ny);
+        }
+        for kk in next.into_iter().flatten() {
+            if !visited[kk] && is_air(kk) {
+                visited[kk] = true;
+                stack.push(kk);
+            }
+        }
+    }
+    out
+}
+
+/// Finds the cavities of area at least `min_area`: the air regions outside `atmosphere` (from
+/// [`atmosphere_mask`]). `keep` rejects cavities by their nodes (e.g. air trapped against a wall). Sorted by
+/// decreasing area.
+pub fn find_cavities(ls: &LevelSet, atmosphere: &[bool], min_area: f64, keep: impl Fn(&[V2]) -> bool) -> Vec<Cavity> {
+    let ny = ls.ny;
+    let mut visited = atmosphere.to_vec();
     let cell_area = ls.spacing * ls.spacing;
     let mut cavities = vec![];
-    for k in 0..ny * nz {
-        if state[k] != 1 {
+    for k in 0..ls.phi.len() {
+        if visited[k] || !ls.is_air(k % ny, k / ny) {
             continue;
         }
-        let nodes = flood(&mut state, k);
+        let nodes = flood(ls, &[k], &mut visited);
         let area = nodes.len() as f64 * cell_area;
         if area < min_area {
             continue;
@@ -121,37 +124,9 @@ pub const CONTOUR_OFFSET: usize = 2;
 
 /// Air nodes connected to the top row of the grid (the atmosphere), as a mask over the nodes.
 pub fn atmosphere_mask(ls: &LevelSet) -> Vec<bool> {
-    let (ny, nz) = (ls.ny, ls.nz);
-    let mut mask = vec![false; ny * nz];
-    let mut stack: Vec<usize> = (0..ny)
-        .map(|i| (nz - 1) * ny + i)
-        .filter(|&k| ls.is_air(k % ny, k / ny))
-        .collect();
-    for &k in &stack {
-        mask[k] = true;
-    }
-    while let Some(k) = stack.pop() {
-        let (i, j) = (k % ny, k / ny);
-        let mut next = vec![];
-        if i > 0 {
-            next.push(k - 1);
-        }
-        if i + 1 < ny {
-            next.push(k + 1);
-        }
-        if j > 0 {
-            next.push(k - ny);
-        }
-        if j + 1 < nz {
-            next.push(k + ny);
-        }
-        for kk in next {
-            if !mask[kk] && ls.is_air(kk % ny, kk / ny) {
-                mask[kk] = true;
-                stack.push(kk);
-            }
-        }
-    }
+    let mut mask = vec![false; ls.ny * ls.nz];
+    let top: Vec<usize> = (0..ls.ny).map(|i| (ls.nz - 1) * ls.ny + i).collect();
+    flood(ls, &top, &mut mask);
     mask
 }
 

@@ -112,7 +112,6 @@ fn snapshot(scene: &mut Scene) -> Snapshot {
 /// A cavity counts as a plunge only if its lowest point is below this fraction of the crest height.
 pub const PLUNGE_CAVITY_DEPTH: f64 = 0.5;
 
-/// Looks for a closed air cavity at the bow wave; returns the metrics if the wave has plunged.
 /// The level set of the previous check with its atmosphere mask.
 type PreviousAir = Option<(level_set::LevelSet, Vec<bool>)>;
 
@@ -121,12 +120,13 @@ type PreviousAir = Option<(level_set::LevelSet, Vec<bool>)>;
 /// were fluid before and are not plunges.
 pub const TRAPPED_FRACTION: f64 = 0.5;
 
+/// Looks for a closed air cavity at the bow wave; returns the metrics and the cavity if the wave has plunged.
 fn plunge_check(
     scene: &Scene,
     s: &Snapshot,
     t: f64,
     previous: &mut PreviousAir,
-) -> Option<(PlungeMetrics, level_set::LevelSet, cavity::Cavity)> {
+) -> Option<(PlungeMetrics, cavity::Cavity)> {
     let g = &scene.geom;
     let h = s.h;
     let zmax = s.pos.iter().map(|p| p.y).fold(f64::NEG_INFINITY, f64::max);
@@ -140,10 +140,9 @@ fn plunge_check(
             (nearest_point(&walls, p) - p).norm() > margin && p.x < g.width - margin && p.y > -g.depth + margin
         })
     };
-    let cavities = cavity::find_cavities(&ls, (2.0 * h).powi(2), keep);
-    let prev = previous.take();
-    *previous = Some((ls.clone(), cavity::atmosphere_mask(&ls)));
-    let (pls, pmask) = prev?;
+    let atmosphere = cavity::atmosphere_mask(&ls);
+    let cavities = cavity::find_cavities(&ls, &atmosphere, (2.0 * h).powi(2), keep);
+    let (pls, pmask) = previous.replace((ls.clone(), atmosphere))?;
     let was_open = |c: &cavity::Cavity| cavity::trapped_fraction(&ls, c, &pls, &pmask) >= TRAPPED_FRACTION;
     // Crest: the highest free-surface particle over the cavity or up to one cavity width before it.
     let crest_of = |c: &cavity::Cavity| {
@@ -156,10 +155,10 @@ fn plunge_check(
     };
     // A plunge closes the cavity against the free surface in front of the wave: the cavity reaches down
     // into the lower part of the wave. Loops folded within a thin sheet high on the crest are not plunges.
-    let c = cavities
-        .into_iter()
-        .find(|c| c.lo.y < PLUNGE_CAVITY_DEPTH * crest_of(c) && was_open(c))?;
-    let crest = crest_of(&c);
+    let (c, crest) = cavities.into_iter().find_map(|c| {
+        let crest = crest_of(&c);
+        (c.lo.y < PLUNGE_CAVITY_DEPTH * crest && was_open(&c)).then_some((c, crest))
+    })?;
     let u = g.fr;
     let idx = jet::jet_particles(s, &ls, &c);
     let m = jet::metrics(s, &ls, &idx)?;
@@ -184,7 +183,7 @@ fn plunge_check(
         alpha_vg_deg: m.alpha_vg_deg,
         jet_particles: m.particles,
     };
-    Some((pm, ls, c))
+    Some((pm, c))
 }
 
 /// Free-surface elevation η(y) as the top of the fluid in bins of `bin` across [0, width] (NaN where empty).
@@ -200,6 +199,15 @@ fn eta_profile(pos: &[V2], width: f64, bin: f64, dx: f64) -> Vec<f64> {
     top.iter().map(|z| z + 0.5 * dx).collect()
 }
 
+/// Mean of the finite values (bins of η with fluid in them); 0 if there are none.
+fn mean_finite(v: &[f64]) -> f64 {
+    let (sum, n) = v
+        .iter()
+        .filter(|z| z.is_finite())
+        .fold((0.0, 0usize), |(s, n), z| (s + z, n + 1));
+    sum / n.max(1) as f64
+}
+
 /// Runs a case and writes its outputs into `opts.out_dir`.
 pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> anyhow::Result<TwoDtResult> {
     let clock = Instant::now();
@@ -212,20 +220,10 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let total_mass: f64 = scene.sim.fluid.mass.iter().sum();
     let t_start = scene.profile.t_start;
 
-    // 1. Damped settling: the section stands still at x0, velocities are damped at every step.
-    while scene.sim.time < t_start {
-        scene.sim.step().map_err(|b| anyhow::anyhow!("settling blew up: {b}"))?;
-        for v in scene.sim.fluid.vel.iter_mut() {
-            *v *= 0.9;
-        }
-    }
+    // 1. Damped settling: the section stands still at x0.
+    scene.settle()?;
     let ke = |sim: &crate::sph::solver::Simulation<2>| -> f64 {
-        sim.fluid
-            .vel
-            .iter()
-            .zip(&sim.fluid.mass)
-            .map(|(v, m)| 0.5 * m * v.norm_squared())
-            .sum()
+        crate::sph::diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic
     };
     let ke_after_settle = ke(&scene.sim) / (total_mass * g.draft);
     log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
@@ -258,10 +256,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let bin = 4.0 * g.dx_f;
     let eta0 = eta_profile(&scene.sim.fluid.pos, g.width, bin, g.dx_f);
     let far_from = (0.75 * g.width / bin) as usize;
-    let far_ref: f64 = {
-        let v: Vec<f64> = eta0[far_from..].iter().copied().filter(|z| z.is_finite()).collect();
-        v.iter().sum::<f64>() / v.len().max(1) as f64
-    };
+    let far_ref = mean_finite(&eta0[far_from..]);
     let mut far_eta = 0.0f64;
     let mut max_mach = 0.0f64;
     let mut plunge: Option<PlungeMetrics> = None;
@@ -289,10 +284,9 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
             let eta = eta_profile(&s.pos, g.width, bin, g.dx_f);
             if plunge.is_none() {
                 // The mean level of the far field (the top particles jitter by a tenth of a spacing).
-                let v: Vec<f64> = eta[far_from..].iter().copied().filter(|z| z.is_finite()).collect();
-                let far = (v.iter().sum::<f64>() / v.len().max(1) as f64 - far_ref).abs();
+                let far = (mean_finite(&eta[far_from..]) - far_ref).abs();
                 far_eta = far_eta.max(far / g.draft);
-                if let Some((pm, _, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
+                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;

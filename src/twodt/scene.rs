@@ -157,6 +157,23 @@ pub struct Scene {
     pub initial_row: Vec<usize>,
 }
 
+/// Factor applied to every velocity after each settling step.
+pub const SETTLE_DAMPING: f64 = 0.9;
+
+impl Scene {
+    /// Damped settling (see [`TwoDtConfig::settle_crossings`]): steps until the ship starts at
+    /// `profile.t_start`, multiplying every velocity by [`SETTLE_DAMPING`] after each step.
+    pub fn settle(&mut self) -> anyhow::Result<()> {
+        while self.sim.time < self.profile.t_start {
+            self.sim.step().map_err(|b| anyhow::anyhow!("settling blew up: {b}"))?;
+            for v in self.sim.fluid.vel.iter_mut() {
+                *v *= SETTLE_DAMPING;
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Builds the scene: hull draft and beam from its metadata (D = draft_m/length_m, B = beam_m/length_m).
 pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene> {
     let meta = &hull.meta;

@@ -157,13 +157,7 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
             support,
         ));
     }
-    // Settling as in a 2D+t run.
-    while scene.sim.time < t_start {
-        scene.sim.step().map_err(|b| anyhow::anyhow!("settling blew up: {b}"))?;
-        for u in scene.sim.fluid.vel.iter_mut() {
-            *u *= 0.9;
-        }
-    }
+    scene.settle()?;
     let mut out = vec![];
     let mut targets: Vec<f64> = at.to_vec();
     targets.sort_by(f64::total_cmp);
