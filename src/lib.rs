@@ -14,5 +14,6 @@ pub mod geometry;
 pub mod io;
 pub mod reference;
 pub mod sph;
+pub mod studies;
 pub mod twodt;
 pub mod validation;

@@ -68,6 +68,12 @@ enum Command {
         /// graded rows are not yet relaxed well enough, see docs/twodt.md).
         #[arg(long, default_value_t = 1.0)]
         ratio: f64,
+        /// Domain width W as a multiple of the beam B (thesis §10.1.2: 4).
+        #[arg(long, default_value_t = 4.0)]
+        width: f64,
+        /// Water depth Z as a multiple of the draft D (thesis §10.1.2 and appendix D: 2).
+        #[arg(long, default_value_t = 2.0)]
+        depth: f64,
         /// Where to stop: `plunge` (shortly after it), `transom`, or an x/L value (e.g. 1.3 for stern waves).
         #[arg(long, default_value = "plunge")]
         until: String,
@@ -97,6 +103,36 @@ enum Command {
         #[arg(long)]
         frames: bool,
         /// No progress bar.
+        #[arg(long, short)]
+        quiet: bool,
+    },
+    /// Froude sweep: run every case of a study file (TOML, see docs/studies.md) that is not finished yet, then
+    /// gather them into jets.csv, comparison.csv, report.md, figures and manifest.json. Resumable: finished
+    /// cases are recorded and skipped; an interruption loses at most the cases in progress.
+    Study {
+        /// Study file, e.g. studies/quick.toml.
+        file: PathBuf,
+        /// Output folder (default out/study-NAME).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Run only case N (1-based, in the order of `froude`), e.g. a batch array index; then collect
+        /// whatever is finished.
+        #[arg(long)]
+        case: Option<usize>,
+        /// Do not run anything: gather the finished cases into the tables and figures.
+        #[arg(long)]
+        collect: bool,
+        /// Recompute finished cases.
+        #[arg(long)]
+        force: bool,
+        /// Print each case's particle count, estimated steps and run time, and run nothing.
+        #[arg(long)]
+        dry_run: bool,
+        /// Cases run at the same time, each with threads/jobs worker threads (default 1: every thread inside
+        /// one case, measured faster on 2 cores, see docs/studies.md).
+        #[arg(long, default_value_t = 1)]
+        jobs: usize,
+        /// No progress bars.
         #[arg(long, short)]
         quiet: bool,
     },
@@ -185,6 +221,10 @@ enum HullAction {
         /// Output file (default hulls/NAME.csv).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Override a generator parameter, `key=value` (repeatable; keys as in the file's `# generator:` line,
+        /// e.g. `flare=15` or `p_entrance=3`) for sensitivity studies. The hull is then labelled a variant.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
     },
     /// Draw a hull: body plan, profile, waterline plan and w_n along the girth (PNG).
     Show {
@@ -225,6 +265,62 @@ fn run() -> anyhow::Result<()> {
             .context("setting the thread count")?;
     }
     match cli.command {
+        Command::Study {
+            file,
+            out,
+            case,
+            collect,
+            force,
+            dry_run,
+            jobs,
+            quiet,
+        } => {
+            use bowwave::studies;
+            let study = studies::study_file::Study::read(&file)?;
+            let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("study-{}", study.spec.name)));
+            if dry_run {
+                let est = studies::runner::dry_run(&study)?;
+                println!(
+                    "study {} ({} cases), {}",
+                    study.spec.name,
+                    est.len(),
+                    study.hull_path.display()
+                );
+                println!("case  Fr      dx/L       particles  est. steps  est. time (s)");
+                for e in &est {
+                    println!(
+                        "{:4}  {:<6}  {:.3e}  {:9}  {:10.0}  {:13.0}",
+                        e.spec.index, e.spec.fr, e.spec.dx, e.particles, e.steps, e.seconds
+                    );
+                }
+                println!(
+                    "total {:.0} s at {:.1e} particle-steps/s (the measured 2D+t throughput on 2 cores; a plunge search \
+                     is counted to its give-up point, the worst case)",
+                    est.iter().map(|e| e.seconds).sum::<f64>(),
+                    studies::runner::REFERENCE_THROUGHPUT
+                );
+                return Ok(());
+            }
+            if !collect {
+                let opts = studies::runner::StudyOptions {
+                    out_dir: out.clone(),
+                    force,
+                    case,
+                    jobs,
+                    threads: rayon::current_num_threads(),
+                    progress: !quiet,
+                };
+                let ran = studies::runner::run_cases(&study, &opts)?;
+                println!("{ran} case(s) run");
+            }
+            let n = studies::collect_all(&study, &out)?;
+            println!(
+                "{n} of {} case(s) finished; tables, report and figures in {}",
+                study.cases.len(),
+                out.display()
+            );
+            print!("{}", std::fs::read_to_string(out.join("report.md")).unwrap_or_default());
+        }
         Command::Wedge { dx, deadrise } => {
             let spec = bowwave::twodt::wedge::WedgeSpec {
                 dx,
@@ -239,6 +335,8 @@ fn run() -> anyhow::Result<()> {
             fr,
             dx,
             ratio,
+            width,
+            depth,
             until,
             c0,
             detect_every,
@@ -256,6 +354,8 @@ fn run() -> anyhow::Result<()> {
                 fr,
                 dx,
                 coarse_ratio: ratio,
+                width_over_beam: width,
+                depth_over_draft: depth,
                 until: until.parse().map_err(anyhow::Error::msg)?,
                 c0,
                 detect_every,
@@ -271,6 +371,8 @@ fn run() -> anyhow::Result<()> {
                 vtk,
                 plots: true,
                 frames,
+                multi: None,
+                label: String::new(),
             };
             let r = bowwave::twodt::run::run(surface, &cfg, &opts)?;
             bowwave::twodt::report::print(&r, &out);
@@ -336,6 +438,7 @@ fn run() -> anyhow::Result<()> {
                 stations,
                 points,
                 out,
+                set,
             } => {
                 use bowwave::geometry::parametric;
                 let mut spec = match hull.as_str() {
@@ -343,6 +446,9 @@ fn run() -> anyhow::Result<()> {
                     "alliance" => parametric::alliance(),
                     other => anyhow::bail!("hull `{other}`: expected `athena` or `alliance`"),
                 };
+                if !set.is_empty() {
+                    spec = spec.with_overrides(&set)?;
+                }
                 anyhow::ensure!(
                     stations >= 4 && points >= 3,
                     "--stations >= 4 and --points >= 3 expected"

@@ -81,6 +81,8 @@ fn quiet_options(dir: &std::path::Path, all: bool) -> TwoDtOptions {
         vtk: all,
         plots: all,
         frames: false,
+        multi: None,
+        label: String::new(),
     }
 }
 

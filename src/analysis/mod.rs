@@ -3,6 +3,7 @@
 //! hulls or the solver's internals.
 
 pub mod cavity;
+pub mod contour;
 pub mod jet;
 pub mod level_set;
 pub mod snapshot;

@@ -53,6 +53,44 @@ pub struct ParametricSpec {
 }
 
 impl ParametricSpec {
+    /// The same family member with numeric parameters replaced, from `key=value` strings (keys are the
+    /// field names). The result is renamed `NAME-variant` and its source says which values changed, so a
+    /// variant is never mistaken for the calibrated approximation.
+    pub fn with_overrides(&self, pairs: &[String]) -> anyhow::Result<Self> {
+        let mut v = serde_json::to_value(self)?;
+        let original = v.clone();
+        let keys = numeric_keys(&original);
+        let obj = v.as_object_mut().expect("a struct serializes to an object");
+        for pair in pairs {
+            let (key, value) = pair
+                .split_once('=')
+                .ok_or_else(|| anyhow::anyhow!("--set `{pair}`: expected KEY=VALUE"))?;
+            let key = key.trim();
+            let slot = obj.get_mut(key).filter(|x| x.is_number()).ok_or_else(|| {
+                anyhow::anyhow!(
+                    "--set `{pair}`: unknown parameter `{key}`; expected one of {}",
+                    keys.join(", ")
+                )
+            })?;
+            let x: f64 = value
+                .trim()
+                .parse()
+                .ok()
+                .filter(|x: &f64| x.is_finite())
+                .ok_or_else(|| anyhow::anyhow!("--set `{pair}`: expected a finite number after `=`"))?;
+            *slot = serde_json::json!(x);
+        }
+        let mut out: Self = serde_json::from_value(v)?;
+        out.name = format!("{}-variant", self.name);
+        out.source = format!(
+            "VARIANT of the {} approximation ({}); {}",
+            self.name,
+            pairs.join(", "),
+            self.source
+        );
+        Ok(out)
+    }
+
     /// Local keel depth d(x) (positive below the waterline; negative where the keel is above it).
     fn keel_depth(&self, x: f64) -> f64 {
         let (t, f) = (self.draft, self.freeboard);
@@ -181,6 +219,17 @@ impl ParametricSpec {
         self.n_mid = 0.5 * (lo + hi);
         cb_of(self)
     }
+}
+
+fn numeric_keys(v: &serde_json::Value) -> Vec<&str> {
+    v.as_object()
+        .map(|o| {
+            o.iter()
+                .filter(|(_, x)| x.is_number())
+                .map(|(k, _)| k.as_str())
+                .collect()
+        })
+        .unwrap_or_default()
 }
 
 /// R/V Athena (DTMB model 5365) approximation: L = 47 m, B = 6.9 m (between the 6.4–7.3 m of the sources),

@@ -1,4 +1,4 @@
-//! A table of named f64 columns (time series, error tables), written as CSV.
+//! A table of named f64 columns (time series, error tables), written as CSV (and read back).
 
 use super::atomic::write_atomic;
 use std::path::Path;
@@ -38,5 +38,44 @@ impl Table {
 
     pub fn write(&self, path: &Path) -> std::io::Result<()> {
         write_atomic(path, &self.to_csv())
+    }
+
+    /// Reads a table this module wrote (a header, then numeric rows); the error names the file, and the row
+    /// and column of a bad value.
+    pub fn read(path: &Path) -> anyhow::Result<Table> {
+        let file = path.display();
+        let mut r = csv::Reader::from_path(path).map_err(|e| anyhow::anyhow!("{file}: cannot read: {e}"))?;
+        let columns: Vec<String> = r
+            .headers()
+            .map_err(|e| anyhow::anyhow!("{file}: header: {e}"))?
+            .iter()
+            .map(String::from)
+            .collect();
+        let mut t = Table::new(columns);
+        for (k, rec) in r.records().enumerate() {
+            let rec = rec.map_err(|e| anyhow::anyhow!("{file}: row {}: {e}", k + 1))?;
+            let row = rec
+                .iter()
+                .enumerate()
+                .map(|(c, v)| {
+                    v.trim().parse::<f64>().map_err(|_| {
+                        anyhow::anyhow!(
+                            "{file}: row {}, column `{}`: expected a number, got `{v}`",
+                            k + 1,
+                            t.columns[c]
+                        )
+                    })
+                })
+                .collect::<anyhow::Result<Vec<f64>>>()?;
+            anyhow::ensure!(
+                row.len() == t.columns.len(),
+                "{file}: row {}: expected {} values, got {}",
+                k + 1,
+                t.columns.len(),
+                row.len()
+            );
+            t.rows.push(row);
+        }
+        Ok(t)
     }
 }

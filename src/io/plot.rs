@@ -20,6 +20,8 @@ fn register_font() {
 pub enum Style {
     Line,
     Markers,
+    /// Line through the points, each marked.
+    LineMarkers,
 }
 
 /// One named series of (x, y) points.
@@ -100,10 +102,13 @@ pub fn line_plot_with(
             y1 = y0 + 1.0;
         }
         let mut pad = 0.05 * (y1 - y0);
+        let mut xpad = 0.03 * (x1 - x0);
         if let Some(r) = opts.range {
             (x0, x1, y0, y1) = r;
             pad = 0.0;
+            xpad = 0.0;
         }
+        let (x0, x1) = (x0 - xpad, x1 + xpad);
         let mut chart = ChartBuilder::on(&root)
             .caption(title, ("sans-serif", 24))
             .margin(15)
@@ -131,6 +136,17 @@ pub fn line_plot_with(
                         .draw_series(LineSeries::new(data, c.stroke_width(2)))?
                         .label(s.name.as_str())
                         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
+                }
+                Style::LineMarkers => {
+                    chart.draw_series(LineSeries::new(data.clone(), c.stroke_width(2)))?;
+                    chart
+                        .draw_series(data.into_iter().map(|p| Circle::new(p, 4, c.filled())))?
+                        .label(s.name.as_str())
+                        .legend(move |(x, y)| {
+                            EmptyElement::at((x, y))
+                                + PathElement::new(vec![(0, 0), (20, 0)], c.stroke_width(2))
+                                + Circle::new((10, 0), 4, c.filled())
+                        });
                 }
                 Style::Markers => {
                     chart
@@ -232,4 +248,197 @@ fn colour_map(s: f64) -> RGBColor {
         }
     }
     RGBColor(210, 30, 30)
+}
+
+/// One panel of a sheet of particle plots.
+pub struct ScatterPanel {
+    pub title: String,
+    pub points: Vec<(f64, f64)>,
+    /// Colour values in [0, 1].
+    pub values: Vec<f64>,
+    pub walls: Vec<Vec<(f64, f64)>>,
+    /// (x0, x1, y0, y1), drawn at equal scale.
+    pub range: (f64, f64, f64, f64),
+}
+
+/// Several particle plots on one sheet, `columns` across, each panel `panel_width` pixels wide and as tall
+/// as its range needs at equal scale (the tallest panel of a row sets the row).
+pub fn scatter_sheet(
+    path: &Path,
+    title: &str,
+    panels: &[ScatterPanel],
+    columns: usize,
+    panel_width: u32,
+) -> anyhow::Result<()> {
+    register_font();
+    anyhow::ensure!(!panels.is_empty(), "{}: no panels to draw", path.display());
+    let columns = columns.clamp(1, panels.len());
+    let rows = panels.len().div_ceil(columns);
+    let plot_w = panel_width.saturating_sub(90).max(100) as f64;
+    let panel_h = |p: &ScatterPanel| {
+        let (x0, x1, y0, y1) = p.range;
+        ((plot_w * (y1 - y0) / (x1 - x0)) as u32 + 90).clamp(150, 2000)
+    };
+    let row_h: Vec<u32> = (0..rows)
+        .map(|r| {
+            panels[r * columns..((r + 1) * columns).min(panels.len())]
+                .iter()
+                .map(panel_h)
+                .max()
+                .unwrap_or(150)
+        })
+        .collect();
+    let (w, h) = (panel_width * columns as u32, row_h.iter().sum::<u32>() + 50);
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let root = root.titled(title, ("sans-serif", 26))?;
+        let mut top = 0i32;
+        for (r, &rh) in row_h.iter().enumerate() {
+            for c in 0..columns {
+                let Some(p) = panels.get(r * columns + c) else { break };
+                let x_off = (c as u32 * panel_width) as i32;
+                let area = root.clone().shrink((x_off, top), (panel_width, panel_h(p)));
+                let (x0, x1, y0, y1) = p.range;
+                let mut chart = ChartBuilder::on(&area)
+                    .caption(&p.title, ("sans-serif", 18))
+                    .margin(8)
+                    .x_label_area_size(30)
+                    .y_label_area_size(55)
+                    .build_cartesian_2d(x0..x1, y0..y1)?;
+                chart
+                    .configure_mesh()
+                    .disable_mesh()
+                    .label_style(("sans-serif", 12))
+                    .draw()?;
+                chart.draw_series(
+                    p.points
+                        .iter()
+                        .zip(&p.values)
+                        .filter(|(q, _)| q.0 >= x0 && q.0 <= x1 && q.1 >= y0 && q.1 <= y1)
+                        .map(|(q, v)| Circle::new(*q, 1, colour_map(v.clamp(0.0, 1.0)).filled())),
+                )?;
+                for wl in &p.walls {
+                    chart.draw_series(LineSeries::new(wl.iter().copied(), BLACK.stroke_width(2)))?;
+                }
+            }
+            top += rh as i32;
+        }
+        root.present()?;
+    }
+    let img = encode_png(&buf, w, h)?;
+    write_atomic(path, &img)?;
+    Ok(())
+}
+
+/// A scalar field on a regular grid, values\[i\]\[j\] at (x0 + i dx, y0 + j dy); NaN where undefined.
+pub struct Field {
+    pub x0: f64,
+    pub dx: f64,
+    pub y0: f64,
+    pub dy: f64,
+    pub values: Vec<Vec<f64>>,
+}
+
+/// A colour map of a field (blue → red over [vmin, vmax], white where NaN) with line segments drawn over it
+/// (contours), a colour bar, and labelled ticks along the top edge at given x (e.g. a second abscissa).
+#[allow(clippy::too_many_arguments)]
+pub fn field_map(
+    path: &Path,
+    title: &str,
+    (xlabel, ylabel): (&str, &str),
+    field: &Field,
+    (vmin, vmax): (f64, f64),
+    segments: &[[(f64, f64); 2]],
+    top_ticks: &[(f64, String)],
+    size: (u32, u32),
+) -> anyhow::Result<()> {
+    register_font();
+    let nx = field.values.len();
+    let ny = field.values.first().map_or(0, |c| c.len());
+    anyhow::ensure!(nx > 0 && ny > 0, "{}: empty field", path.display());
+    let (x0, x1) = (field.x0 - 0.5 * field.dx, field.x0 + (nx as f64 - 0.5) * field.dx);
+    let (y0, y1) = (field.y0 - 0.5 * field.dy, field.y0 + (ny as f64 - 0.5) * field.dy);
+    let (w, h) = size;
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (main, bar) = root.split_horizontally(w.saturating_sub(150));
+        let mut chart = ChartBuilder::on(&main)
+            .caption(title, ("sans-serif", 22))
+            .margin(15)
+            .margin_top(40)
+            .x_label_area_size(45)
+            .y_label_area_size(70)
+            .build_cartesian_2d(x0..x1, y0..y1)?;
+        chart
+            .configure_mesh()
+            .disable_mesh()
+            .x_desc(xlabel)
+            .y_desc(ylabel)
+            .label_style(("sans-serif", 14))
+            .axis_desc_style(("sans-serif", 16))
+            .draw()?;
+        let span = (vmax - vmin).max(1e-300);
+        chart.draw_series(field.values.iter().enumerate().flat_map(|(i, col)| {
+            col.iter()
+                .enumerate()
+                .filter(|(_, v)| v.is_finite())
+                .map(move |(j, v)| {
+                    let (cx, cy) = (field.x0 + i as f64 * field.dx, field.y0 + j as f64 * field.dy);
+                    Rectangle::new(
+                        [
+                            (cx - 0.5 * field.dx, cy - 0.5 * field.dy),
+                            (cx + 0.5 * field.dx, cy + 0.5 * field.dy),
+                        ],
+                        colour_map(((v - vmin) / span).clamp(0.0, 1.0)).filled(),
+                    )
+                })
+        }))?;
+        chart.draw_series(
+            segments
+                .iter()
+                .map(|s| PathElement::new(vec![s[0], s[1]], BLACK.stroke_width(1))),
+        )?;
+        for (x, label) in top_ticks.iter().filter(|(x, _)| *x >= x0 && *x <= x1) {
+            chart.draw_series(std::iter::once(PathElement::new(
+                vec![(*x, y1), (*x, y1 - 0.04 * (y1 - y0))],
+                BLACK.stroke_width(2),
+            )))?;
+            chart.draw_series(std::iter::once(Text::new(
+                label.clone(),
+                (*x, y1 - 0.05 * (y1 - y0)),
+                ("sans-serif", 13)
+                    .into_font()
+                    .color(&BLACK)
+                    .pos(plotters::style::text_anchor::Pos::new(
+                        plotters::style::text_anchor::HPos::Center,
+                        plotters::style::text_anchor::VPos::Top,
+                    )),
+            )))?;
+        }
+        let mut cb = ChartBuilder::on(&bar)
+            .margin(15)
+            .margin_top(40)
+            .x_label_area_size(45)
+            .y_label_area_size(80)
+            .build_cartesian_2d(0.0..1.0, vmin..vmax)?;
+        cb.configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .label_style(("sans-serif", 13))
+            .draw()?;
+        let n = 100;
+        cb.draw_series((0..n).map(|k| {
+            let a = vmin + span * k as f64 / n as f64;
+            let b = vmin + span * (k + 1) as f64 / n as f64;
+            Rectangle::new([(0.0, a), (1.0, b)], colour_map((k as f64 + 0.5) / n as f64).filled())
+        }))?;
+        root.present()?;
+    }
+    let img = encode_png(&buf, w, h)?;
+    write_atomic(path, &img)?;
+    Ok(())
 }

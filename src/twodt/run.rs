@@ -24,10 +24,14 @@ pub struct TwoDtOptions {
     pub plots: bool,
     /// PNG frame of the bow region (particles by initial depth) at every output.
     pub frames: bool,
+    /// Where to attach the progress bar (a study's bars); `None`: a bar of its own.
+    pub multi: Option<indicatif::MultiProgress>,
+    /// Label in front of the progress bar.
+    pub label: String,
 }
 
 /// Everything measured at the plunge (non-dimensional as named).
-#[derive(Clone, Debug, Default, serde::Serialize)]
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub struct PlungeMetrics {
     pub x_plunge_over_l: f64,
     pub y_plunge_over_l: f64,
@@ -51,7 +55,7 @@ pub struct PlungeMetrics {
 }
 
 /// The result of a run.
-#[derive(Clone, Debug, serde::Serialize)]
+#[derive(Clone, Debug, serde::Serialize, serde::Deserialize)]
 pub struct TwoDtResult {
     pub hull: String,
     pub fr: f64,
@@ -199,6 +203,16 @@ fn eta_profile(pos: &[V2], width: f64, bin: f64, dx: f64) -> Vec<f64> {
     top.iter().map(|z| z + 0.5 * dx).collect()
 }
 
+/// The half-breadth of a section polyline at the calm level z = 0: the largest y where it crosses z = 0
+/// (0 if it does not reach the water).
+fn waterline_half_breadth(points: &[V2]) -> f64 {
+    points
+        .windows(2)
+        .filter(|w| (w[0].y <= 0.0) != (w[1].y <= 0.0))
+        .map(|w| w[0].x + (w[1].x - w[0].x) * (0.0 - w[0].y) / (w[1].y - w[0].y))
+        .fold(0.0, f64::max)
+}
+
 /// Mean of the finite values (bins of η with fluid in them); 0 if there are none.
 fn mean_finite(v: &[f64]) -> f64 {
     let (sum, n) = v
@@ -231,9 +245,16 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     // 2. The passage.
     let bar = opts.progress.then(|| {
         let b = indicatif::ProgressBar::new(1000);
+        let b = match &opts.multi {
+            Some(m) => m.add(b),
+            None => b,
+        };
         b.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} x/L = {msg} [{elapsed_precise} / eta {eta_precise}]")
-                .expect("valid template"),
+            indicatif::ProgressStyle::with_template(&format!(
+                "{}{{bar:40}} x/L = {{msg}} [{{elapsed_precise}} / eta {{eta_precise}}]",
+                opts.label
+            ))
+            .expect("valid template"),
         );
         b
     });
@@ -268,6 +289,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let mut next_output = g.x0;
     let mut vtk_frames: Vec<(f64, String)> = vec![];
     let mut blowup = None;
+    let mut bow = None;
     let steps0 = scene.sim.steps;
     loop {
         let x = scene.profile.x_at(scene.sim.time);
@@ -291,6 +313,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;
                     }
+                    bow = Some(bow_tables(&scene, &s));
                     if cfg.until == Until::Plunge {
                         x_stop = x_stop.min(pm.x_plunge_over_l + cfg.after_plunge);
                     }
@@ -309,8 +332,10 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                     s.on_surface.iter().filter(|b| **b).count() as f64,
                     scene.sim.wall_corrections as f64,
                 ]);
+                let y_wl = waterline_half_breadth(&scene.profile.at(scene.sim.time).points);
                 for (k, z) in eta.iter().enumerate() {
-                    if z.is_finite() {
+                    // Bins inside the hull's waterline would show the water under the hull, not a free surface.
+                    if z.is_finite() && (k as f64 + 0.5) * bin > y_wl {
                         eta_table.push(vec![x, (k as f64 + 0.5) * bin, z / g.draft]);
                     }
                 }
@@ -367,6 +392,15 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         plunge,
         blowup,
     };
+    let (bow_particles, bow_wall) = match bow {
+        Some(b) => b,
+        None => {
+            let s = snapshot(&mut scene);
+            bow_tables(&scene, &s)
+        }
+    };
+    bow_particles.write(&opts.out_dir.join("snapshot.csv"))?;
+    bow_wall.write(&opts.out_dir.join("snapshot_wall.csv"))?;
     series.write(&opts.out_dir.join("series.csv"))?;
     eta_table.write(&opts.out_dir.join("eta.csv"))?;
     if opts.vtk {
@@ -418,6 +452,30 @@ pub fn metrics_csv(results: &[TwoDtResult]) -> String {
         out += &(r.iter().map(|c| c.1.as_str()).collect::<Vec<_>>().join(",") + "\n");
     }
     out
+}
+
+/// The bow region (y < 2B, z > −D) at the plunge, or at the end without one, for the study's sheet of
+/// snapshots: particles (y/L, z/L, initial row 0 and 1 marked as 1 and 0.75, deeper ones by depth/D up to
+/// 0.5, as in [`depth_plot`]) and the wall polyline.
+fn bow_tables(scene: &Scene, s: &Snapshot) -> (Table, Table) {
+    let g = &scene.geom;
+    let mut parts = Table::new(vec!["y_over_l".into(), "z_over_l".into(), "mark".into()]);
+    for (k, p) in s.pos.iter().enumerate() {
+        if p.x < 2.0 * g.beam && p.y > -g.draft {
+            let id = scene.sim.fluid.id[k] as usize;
+            let mark = match scene.initial_row[id] {
+                0 => 1.0,
+                1 => 0.75,
+                _ => (scene.initial_depth[id] / g.draft).min(0.5),
+            };
+            parts.push(vec![p.x, p.y, mark]);
+        }
+    }
+    let mut wall = Table::new(vec!["y_over_l".into(), "z_over_l".into()]);
+    for p in scene.profile.at(scene.sim.time).points {
+        wall.push(vec![p.x, p.y]);
+    }
+    (parts, wall)
 }
 
 /// Points of a plot.

@@ -62,6 +62,8 @@ pub struct TwoDtConfig {
     /// x/L at t = 0; default: the stem.
     pub x0: Option<f64>,
     pub until: Until,
+    /// With `until` = `Plunge`: the x/L at which the run gives up if nothing has plunged; `None`: the transom.
+    pub give_up_at: Option<f64>,
     /// x/L run on after the plunge when `until` is `Plunge`. Default 0.01.
     pub after_plunge: f64,
     /// Sound speed / √(gL); `None`: 10 × the expected maximum velocity (see [`expected_max_speed`]).
@@ -88,6 +90,7 @@ impl Default for TwoDtConfig {
             coarse_height_over_draft: 1.0,
             x0: None,
             until: Until::Plunge,
+            give_up_at: None,
             after_plunge: 0.01,
             c0: None,
             settle_crossings: 1.0,
@@ -185,6 +188,16 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         "coarse ratio: expected ≥ 1, got {}",
         cfg.coarse_ratio
     );
+    anyhow::ensure!(
+        cfg.width_over_beam >= 1.0 && cfg.width_over_beam.is_finite(),
+        "domain width W/B: expected ≥ 1, got {}",
+        cfg.width_over_beam
+    );
+    anyhow::ensure!(
+        cfg.depth_over_draft > 1.0 && cfg.depth_over_draft.is_finite(),
+        "water depth Z/D: expected > 1, got {}",
+        cfg.depth_over_draft
+    );
     let dx_f = cfg.dx.unwrap_or_else(|| auto_dx(cfg.fr, draft));
     anyhow::ensure!(
         dx_f > 0.0 && dx_f < draft / 4.0,
@@ -198,7 +211,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let x_end = match cfg.until {
         Until::X(x) => x,
         Until::Transom => hull.x_range.1,
-        Until::Plunge => hull.x_range.1,
+        Until::Plunge => cfg.give_up_at.unwrap_or(hull.x_range.1).min(hull.x_range.1),
     };
     anyhow::ensure!(x_end > x0, "--until: x/L = {x_end} is not after the start x0 = {x0}");
     let c0 = cfg

@@ -1,0 +1,247 @@
+//! Gathers a study's finished cases into its tables: `jets.csv` (one row per Froude number, every metric),
+//! `comparison.csv` and `report.md` (ours against the published jets of the same hull, with the hull file's
+//! status beside every row so that a geometry difference is not mistaken for a solver error).
+
+use super::runner::CaseRecord;
+use crate::io::atomic::write_atomic;
+use crate::reference::{published_jets, PublishedJet};
+use crate::twodt::run::metrics_csv;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// One compared quantity.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    pub fr: f64,
+    pub quantity: &'static str,
+    pub ours: Option<f64>,
+    pub published: f64,
+    pub our_dx: f64,
+    pub published_dx: f64,
+    /// Why `ours` is missing, or "".
+    pub note: String,
+}
+
+impl Comparison {
+    /// (ours − published)/published.
+    pub fn rel_diff(&self) -> Option<f64> {
+        self.ours.map(|o| (o - self.published) / self.published)
+    }
+}
+
+/// The published jets of `hull` (by name, e.g. "athena") at the study's Froude numbers.
+pub fn published_for<'a>(hull: &str, recs: &'a [CaseRecord]) -> Vec<(PublishedJet, Option<&'a CaseRecord>)> {
+    published_jets()
+        .into_iter()
+        .filter(|p| p.hull == hull)
+        .map(|p| {
+            let ours = recs.iter().find(|r| (r.spec.fr - p.fr).abs() < 1e-9);
+            (p, ours)
+        })
+        .filter(|(_, ours)| ours.is_some())
+        .collect()
+}
+
+/// Ours against the published value of every quantity Table 10.1/10.2 gives, for every finished case that
+/// has a published row.
+pub fn comparisons(hull: &str, recs: &[CaseRecord]) -> Vec<Comparison> {
+    let mut out = vec![];
+    for (p, rec) in published_for(hull, recs) {
+        let rec = rec.expect("filtered");
+        let r = &rec.result;
+        let note = match (&r.plunge, &r.blowup) {
+            (Some(_), _) => String::new(),
+            (None, Some(b)) => format!("stopped early: {b}"),
+            (None, None) => format!("no plunge up to x/L = {:.3}", r.x_end_over_l),
+        };
+        let m = r.plunge.as_ref();
+        for (quantity, ours, published) in [
+            ("x_plunge_over_l", m.map(|m| m.x_plunge_over_l), p.x_plunge_over_l),
+            ("y_plunge_over_l", m.map(|m| m.y_plunge_over_l), p.y_plunge_over_l),
+            ("h_pj_over_d", m.map(|m| m.h_pj_over_d), p.h_pj_over_d),
+        ] {
+            out.push(Comparison {
+                fr: p.fr,
+                quantity,
+                ours,
+                published,
+                our_dx: r.dx_over_l,
+                published_dx: p.dx_over_l,
+                note: note.clone(),
+            });
+        }
+    }
+    out
+}
+
+fn cell(x: Option<f64>) -> String {
+    x.map(|v| format!("{v:.6}")).unwrap_or_default()
+}
+
+/// Writes `jets.csv`, `comparison.csv` and `report.md` into `out`.
+pub fn write_tables(
+    out: &Path,
+    study_name: &str,
+    hull: &str,
+    hull_status: &str,
+    recs: &[CaseRecord],
+    n_cases: usize,
+) -> anyhow::Result<()> {
+    let results: Vec<_> = recs.iter().map(|r| r.result.clone()).collect();
+    write_atomic(&out.join("jets.csv"), metrics_csv(&results).as_bytes())?;
+    let comps = comparisons(hull, recs);
+    let mut csv =
+        String::from("hull,hull_status,fr,quantity,ours,published,rel_diff,our_dx_over_l,published_dx_over_l,note\n");
+    for c in &comps {
+        writeln!(
+            csv,
+            "{hull},{hull_status},{},{},{},{},{},{:.3e},{:.3e},{}",
+            c.fr,
+            c.quantity,
+            cell(c.ours),
+            c.published,
+            cell(c.rel_diff()),
+            c.our_dx,
+            c.published_dx,
+            c.note.replace(',', ";")
+        )?;
+    }
+    write_atomic(&out.join("comparison.csv"), csv.as_bytes())?;
+    write_atomic(
+        &out.join("report.md"),
+        report(study_name, hull, hull_status, recs, &comps, n_cases).as_bytes(),
+    )?;
+    Ok(())
+}
+
+/// The Markdown report: cases, comparison, and the published trends checked on our numbers.
+pub fn report(
+    study_name: &str,
+    hull: &str,
+    hull_status: &str,
+    recs: &[CaseRecord],
+    comps: &[Comparison],
+    n_cases: usize,
+) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# Study `{study_name}`: hull `{hull}` ({hull_status})\n");
+    if hull_status != "exact" {
+        let _ = writeln!(
+            s,
+            "**The hull file is an {hull_status}**, not the hull of the published results: differences below \
+             mix geometry and solver; read them as such.\n"
+        );
+    }
+    let _ = writeln!(s, "{} of {} cases finished.\n", recs.len(), n_cases);
+    let _ = writeln!(
+        s,
+        "| Fr | dx/L | particles | steps | CPU s | outcome | x_p/L | y_p/L | Fr_x | H_pj/D | Γ/(UD) | L_jet/D | S_jet/(DB) | I_OG/S² | α_G ° | α_VG ° |"
+    );
+    let _ = writeln!(s, "|{}", "---|".repeat(16));
+    for r in recs.iter().map(|r| &r.result) {
+        let outcome = match (&r.plunge, &r.blowup) {
+            (Some(_), _) => "plunge".to_string(),
+            (None, Some(_)) => "stopped early".to_string(),
+            (None, None) => format!("no plunge to x/L {:.3}", r.x_end_over_l),
+        };
+        let f = |v: Option<f64>| v.map(|v| format!("{v:.3}")).unwrap_or_else(|| "–".into());
+        let m = r.plunge.as_ref();
+        let _ = writeln!(
+            s,
+            "| {} | {:.2e} | {} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            r.fr,
+            r.dx_over_l,
+            r.particles,
+            r.steps,
+            r.cpu_seconds,
+            outcome,
+            f(m.map(|m| m.x_plunge_over_l)),
+            f(m.map(|m| m.y_plunge_over_l)),
+            f(m.map(|m| m.fr_x)),
+            f(m.map(|m| m.h_pj_over_d)),
+            f(m.map(|m| m.gamma_over_ud)),
+            f(m.map(|m| m.l_jet_over_d)),
+            f(m.map(|m| m.s_jet_over_db)),
+            f(m.map(|m| m.i_og_over_s2)),
+            f(m.map(|m| m.alpha_g_deg)),
+            f(m.map(|m| m.alpha_vg_deg)),
+        );
+    }
+    if comps.is_empty() {
+        let _ = writeln!(s, "\nNo published jet data for hull `{hull}` at these Froude numbers.");
+    } else {
+        let _ = writeln!(
+            s,
+            "\n## Against the published jets (Marrone 2011, Tables 10.1–10.2; `data/reference/published_jets.csv`)\n"
+        );
+        let _ = writeln!(
+            s,
+            "| Fr | quantity | ours | published | difference | our dx/L | published dx/L | note |"
+        );
+        let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
+        for c in comps {
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} | {} | {:.2e} | {:.2e} | {} |",
+                c.fr,
+                c.quantity,
+                c.ours.map(|v| format!("{v:.4}")).unwrap_or_else(|| "–".into()),
+                c.published,
+                c.rel_diff()
+                    .map(|d| format!("{:+.1} %", 100.0 * d))
+                    .unwrap_or_else(|| "–".into()),
+                c.our_dx,
+                c.published_dx,
+                c.note
+            );
+        }
+    }
+    let _ = writeln!(s, "\n## Published trends, checked on our plunging cases\n");
+    for line in trends(recs) {
+        let _ = writeln!(s, "- {line}");
+    }
+    s
+}
+
+/// The trends the thesis reports (§10.1.3), each stated with our numbers: holds, does not hold, or cannot
+/// be checked (fewer than two plunging cases).
+pub fn trends(recs: &[CaseRecord]) -> Vec<String> {
+    let plunged: Vec<_> = recs
+        .iter()
+        .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, m)))
+        .collect();
+    if plunged.len() < 2 {
+        return vec![format!(
+            "{} plunging case(s): the trends of the thesis (x_plunge and y_plunge grow with Fr, Γ/(UD) grows up to \
+             Fr ≈ 0.5 then falls, I_OG/S² falls with Fr, α_G rises from about 40° to 55°) cannot be checked",
+            plunged.len()
+        )];
+    }
+    let series = |f: &dyn Fn(&crate::twodt::run::PlungeMetrics) -> f64| -> Vec<f64> {
+        plunged.iter().map(|(_, m)| f(m)).collect()
+    };
+    let rising = |v: &[f64]| v.windows(2).all(|w| w[1] > w[0]);
+    let falling = |v: &[f64]| v.windows(2).all(|w| w[1] < w[0]);
+    let list = |v: &[f64]| v.iter().map(|x| format!("{x:.3}")).collect::<Vec<_>>().join(", ");
+    let frs: Vec<f64> = plunged.iter().map(|p| p.0).collect();
+    let yes = |b: bool| if b { "holds" } else { "does NOT hold" };
+    let xp = series(&|m| m.x_plunge_over_l);
+    let yp = series(&|m| m.y_plunge_over_l);
+    let io = series(&|m| m.i_og_over_s2);
+    let ag = series(&|m| m.alpha_g_deg);
+    vec![
+        format!("Fr = {}", list(&frs)),
+        format!("x_plunge/L grows with Fr: {} ({})", yes(rising(&xp)), list(&xp)),
+        format!("y_plunge/L grows with Fr: {} ({})", yes(rising(&yp)), list(&yp)),
+        format!("I_OG/S² falls with Fr: {} ({})", yes(falling(&io)), list(&io)),
+        format!(
+            "α_G rises with Fr (thesis: about 40° to 55°): {} ({})",
+            yes(rising(&ag)),
+            list(&ag)
+        ),
+        format!(
+            "Γ/(UD): {} (thesis: about linear up to Fr 0.5, then falling)",
+            list(&series(&|m| m.gamma_over_ud))
+        ),
+    ]
+}

@@ -1,0 +1,30 @@
+//! Froude sweeps: a study file (`study_file`) resolved into cases, run resumably and in parallel (`runner`),
+//! gathered into tables and a report against the published jets (`collect`) and figures (`figures`).
+//! Studies orchestrate; they hold no physics.
+
+pub mod collect;
+pub mod figures;
+pub mod runner;
+pub mod study_file;
+
+use std::path::Path;
+
+/// Gathers the finished cases of `study` in `out` into `jets.csv`, `comparison.csv`, `report.md`, the figures
+/// and the manifest. Returns the number of finished cases.
+pub fn collect_all(study: &study_file::Study, out: &Path) -> anyhow::Result<usize> {
+    let recs = runner::collect_finished(study, out);
+    let hull = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
+    let status = format!("{:?}", hull.meta.status).to_lowercase();
+    std::fs::create_dir_all(out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+    collect::write_tables(
+        out,
+        &study.spec.name,
+        &hull.meta.name,
+        &status,
+        &recs,
+        study.cases.len(),
+    )?;
+    figures::write_all(out, &hull.meta.name, &recs, out)?;
+    runner::write_manifest(study, out)?;
+    Ok(recs.len())
+}

@@ -1,0 +1,268 @@
+//! Runs the cases of a study: resumable (a finished case leaves `case.json`, written atomically, and is
+//! skipped on re-run unless its resolved configuration changed or `force` is set), one case or all, cases in
+//! parallel (`jobs`) or one after the other with every thread inside the case, an overall progress bar and one
+//! per running case, and a manifest (version, commit, resolved configuration, per-case timings).
+
+use super::study_file::{CaseSpec, Study};
+use crate::io::atomic::write_atomic;
+use crate::twodt::run::{run, TwoDtOptions, TwoDtResult};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+
+/// Throughput of a 2D+t run on this project's reference machine (2 cores), particle-steps per second, with
+/// detection every 10 steps and the outputs: measured on Athena Fr 0.5, dx/L = 7e-4, 83 061 particles,
+/// 1457 steps in 632 s (BENCHMARKS.md). Used only for the `--dry-run` estimate.
+pub const REFERENCE_THROUGHPUT: f64 = 1.9e5;
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct StudyOptions {
+    pub out_dir: PathBuf,
+    /// Recompute finished cases.
+    pub force: bool,
+    /// Only this case (1-based), e.g. from a batch scheduler's array index.
+    pub case: Option<usize>,
+    /// Cases run at the same time; each gets `threads / jobs` threads.
+    pub jobs: usize,
+    /// Worker threads in all.
+    pub threads: usize,
+    pub progress: bool,
+}
+
+/// A finished case as recorded in its folder (`case.json`).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct CaseRecord {
+    pub spec: CaseSpec,
+    pub result: TwoDtResult,
+}
+
+/// Folder of a case.
+pub fn case_dir(out: &Path, spec: &CaseSpec) -> PathBuf {
+    out.join("cases").join(spec.dir_name())
+}
+
+/// The finished record of a case, if it exists and matches `spec` (else `None`: to be run).
+pub fn finished(out: &Path, spec: &CaseSpec) -> Option<CaseRecord> {
+    let text = std::fs::read_to_string(case_dir(out, spec).join("case.json")).ok()?;
+    let rec: CaseRecord = serde_json::from_str(&text).ok()?;
+    (rec.spec == *spec).then_some(rec)
+}
+
+/// Every finished case of the study that matches its current configuration, in study order.
+pub fn collect_finished(study: &Study, out: &Path) -> Vec<CaseRecord> {
+    study.cases.iter().filter_map(|c| finished(out, c)).collect()
+}
+
+/// Per-case estimate for `--dry-run`.
+#[derive(Clone, Debug)]
+pub struct Estimate {
+    pub spec: CaseSpec,
+    pub particles: usize,
+    pub steps: f64,
+    pub seconds: f64,
+}
+
+/// Builds each case's scene (no time step) to count its particles and estimate its steps (from the
+/// acoustic time-step limit at c0 with a 10 % margin for the flow speed) and its run time at
+/// [`REFERENCE_THROUGHPUT`]. A plunge search is estimated to its give-up point, the worst case.
+pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
+    let hull = surface(study)?;
+    study
+        .cases
+        .iter()
+        .map(|spec| {
+            let scene = crate::twodt::scene::build(hull.clone(), &spec.config())?;
+            let g = &scene.geom;
+            let h = scene.sim.kernel.h;
+            let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * g.c0, 1.0);
+            let t = scene.profile.t_start + (g.x_end - g.x0) / g.fr;
+            let particles = scene.sim.n_fluid();
+            let steps = (t / dt).ceil();
+            Ok(Estimate {
+                spec: spec.clone(),
+                particles,
+                steps,
+                seconds: particles as f64 * steps / REFERENCE_THROUGHPUT,
+            })
+        })
+        .collect()
+}
+
+fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {
+    let offsets = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
+    Ok(Arc::new(crate::geometry::surface::HullSurface::new(&offsets)))
+}
+
+/// The manifest: what ran, with what, and how long each case took.
+#[derive(Serialize)]
+struct Manifest<'a> {
+    bowwave_version: &'a str,
+    git_commit: &'a str,
+    study_file: String,
+    hull_file: String,
+    hull_status: String,
+    study: &'a super::study_file::StudyFile,
+    cases: Vec<ManifestCase<'a>>,
+}
+
+#[derive(Serialize)]
+struct ManifestCase<'a> {
+    spec: &'a CaseSpec,
+    status: &'static str,
+    wall_seconds: Option<f64>,
+    cpu_seconds: Option<f64>,
+    particles: Option<usize>,
+    steps: Option<u64>,
+}
+
+/// Writes `manifest.json` from the cases finished so far.
+pub fn write_manifest(study: &Study, out: &Path) -> anyhow::Result<()> {
+    let status = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)
+        .map(|h| format!("{:?}", h.meta.status).to_lowercase())
+        .unwrap_or_else(|_| "unknown".into());
+    let cases = study
+        .cases
+        .iter()
+        .map(|spec| {
+            let rec = finished(out, spec);
+            let r = rec.as_ref().map(|r| &r.result);
+            ManifestCase {
+                spec,
+                status: match r {
+                    None => "not run",
+                    Some(r) if r.blowup.is_some() => "stopped early",
+                    Some(r) if r.plunged => "plunged",
+                    Some(_) => "no plunge",
+                },
+                wall_seconds: r.map(|r| r.wall_seconds),
+                cpu_seconds: r.map(|r| r.cpu_seconds),
+                particles: r.map(|r| r.particles),
+                steps: r.map(|r| r.steps),
+            }
+        })
+        .collect();
+    let m = Manifest {
+        bowwave_version: env!("CARGO_PKG_VERSION"),
+        git_commit: env!("BOWWAVE_GIT_COMMIT"),
+        study_file: study.file.display().to_string(),
+        hull_file: study.hull_path.display().to_string(),
+        hull_status: status,
+        study: &study.spec,
+        cases,
+    };
+    write_atomic(&out.join("manifest.json"), serde_json::to_string_pretty(&m)?.as_bytes())?;
+    Ok(())
+}
+
+/// Runs the cases that are not finished yet (or all with `force`, or only `case`), then rewrites the
+/// manifest. Returns how many cases ran.
+pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
+    let todo: Vec<CaseSpec> = study
+        .cases
+        .iter()
+        .filter(|c| opts.case.is_none_or(|k| k == c.index))
+        .filter(|c| {
+            let done = finished(&opts.out_dir, c).is_some();
+            if done && !opts.force {
+                log::info!("case {} (Fr {}) already finished, skipped", c.index, c.fr);
+            }
+            opts.force || !done
+        })
+        .cloned()
+        .collect();
+    if let Some(k) = opts.case {
+        anyhow::ensure!(
+            (1..=study.cases.len()).contains(&k),
+            "--case {k}: expected 1 to {} (the study has {} Froude numbers)",
+            study.cases.len(),
+            study.cases.len()
+        );
+    }
+    std::fs::create_dir_all(&opts.out_dir)
+        .map_err(|e| anyhow::anyhow!("cannot create output directory {}: {e}", opts.out_dir.display()))?;
+    write_manifest(study, &opts.out_dir)?;
+    if todo.is_empty() {
+        return Ok(0);
+    }
+    let hull = surface(study)?;
+    let multi = indicatif::MultiProgress::new();
+    if !opts.progress {
+        multi.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    }
+    let overall = multi.add(indicatif::ProgressBar::new(todo.len() as u64));
+    overall.set_style(
+        indicatif::ProgressStyle::with_template("cases {pos}/{len} {bar:30} [{elapsed_precise} / eta {eta_precise}]")
+            .expect("valid template"),
+    );
+    let jobs = opts.jobs.clamp(1, todo.len());
+    let threads_each = (opts.threads / jobs).max(1);
+    let queue = Mutex::new(todo.into_iter().rev().collect::<Vec<_>>());
+    let errors: Mutex<Vec<String>> = Mutex::new(vec![]);
+    let ran = Mutex::new(0usize);
+    let manifest_lock = Mutex::new(());
+    std::thread::scope(|scope| {
+        for _ in 0..jobs {
+            scope.spawn(|| {
+                let pool = match rayon::ThreadPoolBuilder::new().num_threads(threads_each).build() {
+                    Ok(p) => p,
+                    Err(e) => {
+                        errors.lock().expect("lock").push(format!("thread pool: {e}"));
+                        return;
+                    }
+                };
+                loop {
+                    let Some(spec) = queue.lock().expect("lock").pop() else {
+                        break;
+                    };
+                    let r = pool.install(|| run_one(&hull, study, &spec, opts, &multi));
+                    match r {
+                        Ok(()) => *ran.lock().expect("lock") += 1,
+                        Err(e) => errors
+                            .lock()
+                            .expect("lock")
+                            .push(format!("case {} (Fr {}): {e:#}", spec.index, spec.fr)),
+                    }
+                    overall.inc(1);
+                    let _guard = manifest_lock.lock().expect("lock");
+                    if let Err(e) = write_manifest(study, &opts.out_dir) {
+                        errors.lock().expect("lock").push(format!("manifest: {e:#}"));
+                    }
+                }
+            });
+        }
+    });
+    overall.finish_and_clear();
+    let errors = errors.into_inner().expect("lock");
+    anyhow::ensure!(errors.is_empty(), "{}", errors.join("\n"));
+    Ok(ran.into_inner().expect("lock"))
+}
+
+/// Runs one case into its folder and records it.
+fn run_one(
+    hull: &Arc<crate::geometry::surface::HullSurface>,
+    study: &Study,
+    spec: &CaseSpec,
+    opts: &StudyOptions,
+    multi: &indicatif::MultiProgress,
+) -> anyhow::Result<()> {
+    let dir = case_dir(&opts.out_dir, spec);
+    // A stale record must not survive a re-run that is interrupted.
+    let _ = std::fs::remove_file(dir.join("case.json"));
+    let topts = TwoDtOptions {
+        out_dir: dir.clone(),
+        progress: opts.progress,
+        vtk: spec.vtk,
+        plots: true,
+        frames: spec.frames,
+        multi: Some(multi.clone()),
+        label: format!("{} Fr {:.3} ", study.spec.name, spec.fr),
+    };
+    let result = run(hull.clone(), &spec.config(), &topts)?;
+    let rec = CaseRecord {
+        spec: spec.clone(),
+        result,
+    };
+    write_atomic(&dir.join("case.json"), serde_json::to_string_pretty(&rec)?.as_bytes())?;
+    Ok(())
+}
