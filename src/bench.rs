@@ -29,6 +29,19 @@ pub struct BenchResult {
     pub share_update: f64,
 }
 
+/// Process CPU time (user + system) from /proc/self/stat, in s; 0 where unavailable.
+pub fn cpu_seconds() -> f64 {
+    let Ok(s) = std::fs::read_to_string("/proc/self/stat") else {
+        return 0.0;
+    };
+    let rest = s.rsplit(')').next().unwrap_or("");
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let tick = 100.0; // USER_HZ, 100 on Linux
+    let ut: f64 = f.get(11).and_then(|v| v.parse().ok()).unwrap_or(0.0);
+    let st: f64 = f.get(12).and_then(|v| v.parse().ok()).unwrap_or(0.0);
+    (ut + st) / tick
+}
+
 /// Peak resident set size of this process (bytes), from /proc/self/status (Linux); 0 elsewhere.
 pub fn peak_rss_bytes() -> u64 {
     std::fs::read_to_string("/proc/self/status")

@@ -10,6 +10,7 @@
 pub mod analysis;
 pub mod bench;
 pub mod cases;
+pub mod convergence;
 pub mod geometry;
 pub mod io;
 pub mod reference;

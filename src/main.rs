@@ -106,6 +106,27 @@ enum Command {
         #[arg(long, short)]
         quiet: bool,
     },
+    /// Convergence of a case (built-in name or TOML file): runs it at several resolutions and prints each
+    /// validated quantity's value and error per resolution, the observed order (thesis appendix C) and a
+    /// Richardson estimate with an uncertainty band; writes converge.csv.
+    Converge {
+        /// Built-in case name (see `bowwave cases`) or case file.
+        case: String,
+        /// Resolutions (reference length / dx), coarse to fine; a constant ratio allows the extrapolation.
+        #[arg(long, value_delimiter = ',', default_values_t = vec![20.0, 40.0, 80.0])]
+        res: Vec<f64>,
+        /// End time override (s).
+        #[arg(long)]
+        end: Option<f64>,
+        /// Output folder for converge.csv (default out/converge-CASE).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Charts of speed against accuracy and of stability, from runs of a validation case (PNG + CSV).
+    Chart {
+        #[command(subcommand)]
+        kind: ChartKind,
+    },
     /// Froude sweep: run every case of a study file (TOML, see docs/studies.md) that is not finished yet, then
     /// gather them into jets.csv, comparison.csv, report.md, figures and manifest.json. Resumable: finished
     /// cases are recorded and skipped; an interruption loses at most the cases in progress.
@@ -255,6 +276,50 @@ fn main() {
     }
 }
 
+#[derive(Subcommand)]
+enum ChartKind {
+    /// Error of one validated quantity against CPU seconds for every variant at every resolution, on log axes,
+    /// with the Pareto front; writes speed_accuracy.csv and .png.
+    SpeedAccuracy {
+        /// Built-in case name or case file.
+        case: String,
+        /// Method variants: delta-sph, molteni, wcsph, wendland, pc, rk4, alpha=A, delta=D, cfl=C.
+        #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "molteni".to_string(), "wcsph".to_string(), "wendland".to_string(), "pc".to_string()])]
+        variants: Vec<String>,
+        /// Resolutions (reference length / dx).
+        #[arg(long, value_delimiter = ',', default_values_t = vec![20.0, 40.0])]
+        res: Vec<f64>,
+        /// End time override (s).
+        #[arg(long)]
+        end: Option<f64>,
+        /// The validated quantity: the first check whose label contains this text (default: the first check).
+        #[arg(long)]
+        quantity: Option<String>,
+        /// Output folder (default out/chart-CASE).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// The case over a grid of two lists of variants (e.g. --rows alpha=0,alpha=0.005 --cols delta-sph,wcsph,
+    /// or --rows cfl=1,cfl=2 --cols rk4,pc), each run marked stable or stopped with its diagnosis; writes
+    /// stability.csv and .png.
+    Stability {
+        case: String,
+        #[arg(long, value_delimiter = ',')]
+        rows: Vec<String>,
+        #[arg(long, value_delimiter = ',')]
+        cols: Vec<String>,
+        /// Resolution (reference length / dx).
+        #[arg(long, default_value_t = 20.0)]
+        res: f64,
+        /// End time override (s).
+        #[arg(long)]
+        end: Option<f64>,
+        /// Output folder (default out/chart-CASE).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
 fn run() -> anyhow::Result<()> {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let cli = Cli::parse();
@@ -265,6 +330,79 @@ fn run() -> anyhow::Result<()> {
             .context("setting the thread count")?;
     }
     match cli.command {
+        Command::Chart { kind } => match kind {
+            ChartKind::SpeedAccuracy {
+                case,
+                variants,
+                res,
+                end,
+                quantity,
+                out,
+            } => {
+                use bowwave::studies::charts;
+                let c = bowwave::cases::load(&case)?;
+                let (label, points) = charts::speed_accuracy(&c, &variants, &res, end, quantity.as_deref())?;
+                let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-{}", c.name)));
+                println!("{}: {label}", c.name);
+                println!("variant        res   particles   steps   CPU s      error   stopped");
+                for p in &points {
+                    println!(
+                        "{:<12} {:>5} {:>11} {:>7} {:>7.1} {:>10.3e}   {}",
+                        p.variant,
+                        p.res,
+                        p.particles,
+                        p.steps,
+                        p.cpu_seconds,
+                        p.error,
+                        p.stopped.clone().unwrap_or_default()
+                    );
+                }
+                for f in charts::write_speed_accuracy(&out, &c.name, &label, &points)? {
+                    println!("wrote {}", f.display());
+                }
+            }
+            ChartKind::Stability {
+                case,
+                rows,
+                cols,
+                res,
+                end,
+                out,
+            } => {
+                use bowwave::studies::charts;
+                anyhow::ensure!(
+                    !rows.is_empty() && !cols.is_empty(),
+                    "--rows and --cols: expected variant lists"
+                );
+                let c = bowwave::cases::load(&case)?;
+                let cells = charts::stability(&c, &rows, &cols, res, end)?;
+                for x in &cells {
+                    println!(
+                        "{:<14} {:<12} {}",
+                        x.a,
+                        x.b,
+                        if x.stable {
+                            "stable".to_string()
+                        } else {
+                            format!("stopped: {}", x.diagnosis)
+                        }
+                    );
+                }
+                let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-{}", c.name)));
+                for f in charts::write_stability(&out, &c.name, &cells)? {
+                    println!("wrote {}", f.display());
+                }
+            }
+        },
+        Command::Converge { case, res, end, out } => {
+            let c = bowwave::cases::load(&case)?;
+            let conv = bowwave::convergence::converge(&c, &res, end)?;
+            print!("{}", conv.report());
+            let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{}", c.name)));
+            std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+            bowwave::io::atomic::write_atomic(&out.join("converge.csv"), conv.csv().as_bytes())?;
+            println!("table in {}", out.join("converge.csv").display());
+        }
         Command::Study {
             file,
             out,

@@ -442,3 +442,126 @@ pub fn field_map(
     write_atomic(path, &img)?;
     Ok(())
 }
+
+/// Series on log–log axes (only positive values are drawn), PNG 1000×650 with a legend.
+pub fn log_log_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series: &[Series]) -> anyhow::Result<()> {
+    register_font();
+    let pts: Vec<(f64, f64)> = series
+        .iter()
+        .flat_map(|s| s.points.iter().copied())
+        .filter(|p| p.0 > 0.0 && p.1 > 0.0 && p.0.is_finite() && p.1.is_finite())
+        .collect();
+    anyhow::ensure!(
+        !pts.is_empty(),
+        "{}: nothing positive to draw on log axes",
+        path.display()
+    );
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::INFINITY, 0.0f64, f64::INFINITY, 0.0f64);
+    for p in &pts {
+        x0 = x0.min(p.0);
+        x1 = x1.max(p.0);
+        y0 = y0.min(p.1);
+        y1 = y1.max(p.1);
+    }
+    let (x0, x1, y0, y1) = (x0 / 1.5, x1 * 1.5, y0 / 1.5, y1 * 1.5);
+    let (w, h) = (1000u32, 650u32);
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 20))
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(80)
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
+        chart
+            .configure_mesh()
+            .x_desc(xlabel)
+            .y_desc(ylabel)
+            .label_style(("sans-serif", 14))
+            .axis_desc_style(("sans-serif", 15))
+            .draw()?;
+        for (k, s) in series.iter().enumerate() {
+            let c = COLOURS[k % COLOURS.len()];
+            let data: Vec<(f64, f64)> = s.points.iter().copied().filter(|p| p.0 > 0.0 && p.1 > 0.0).collect();
+            if matches!(s.style, Style::Line | Style::LineMarkers) {
+                let width = if s.style == Style::Line { 3 } else { 1 };
+                let l = chart.draw_series(LineSeries::new(data.clone(), c.stroke_width(width)))?;
+                if s.style == Style::Line {
+                    l.label(s.name.as_str())
+                        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(3)));
+                }
+            }
+            if matches!(s.style, Style::Markers | Style::LineMarkers) {
+                chart
+                    .draw_series(data.into_iter().map(|p| Circle::new(p, 5, c.filled())))?
+                    .label(s.name.as_str())
+                    .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
+            }
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 14))
+            .draw()?;
+        root.present()?;
+    }
+    let img = encode_png(&buf, w, h)?;
+    write_atomic(path, &img)?;
+    Ok(())
+}
+
+/// A grid of labelled cells coloured green (true), red (false) or grey (missing): rows down, columns across.
+pub fn label_grid(
+    path: &Path,
+    title: &str,
+    rows: &[&str],
+    cols: &[&str],
+    cells: &[Vec<Option<bool>>],
+) -> anyhow::Result<()> {
+    register_font();
+    let (cw, ch) = (150u32, 50u32);
+    let (w, h) = (200 + cw * cols.len() as u32, 90 + ch * (rows.len() as u32 + 1));
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let font = ("sans-serif", 15).into_font();
+        root.draw(&Text::new(title.to_string(), (10, 10), ("sans-serif", 20).into_font()))?;
+        for (j, c) in cols.iter().enumerate() {
+            root.draw(&Text::new(
+                c.to_string(),
+                (210 + (j as u32 * cw) as i32, 60),
+                font.clone(),
+            ))?;
+        }
+        for (i, r) in rows.iter().enumerate() {
+            let y = (90 + i as u32 * ch) as i32;
+            root.draw(&Text::new(r.to_string(), (10, y + 15), font.clone()))?;
+            for (j, v) in cells[i].iter().enumerate() {
+                let x = (200 + j as u32 * cw) as i32;
+                let colour = match v {
+                    Some(true) => RGBColor(120, 200, 120),
+                    Some(false) => RGBColor(220, 90, 80),
+                    None => RGBColor(200, 200, 200),
+                };
+                root.draw(&Rectangle::new(
+                    [(x + 2, y + 2), (x + cw as i32 - 2, y + ch as i32 - 2)],
+                    colour.filled(),
+                ))?;
+                let label = match v {
+                    Some(true) => "stable",
+                    Some(false) => "stopped",
+                    None => "–",
+                };
+                root.draw(&Text::new(label, (x + 10, y + 15), font.clone()))?;
+            }
+        }
+        root.present()?;
+    }
+    let img = encode_png(&buf, w, h)?;
+    write_atomic(path, &img)?;
+    Ok(())
+}

@@ -631,6 +631,20 @@ impl<const D: usize> Simulation<D> {
 
     /// Shepard average of the pressure at `x` over fluid and ghost particles (Pa); `None` if no particle
     /// is within the kernel support. Call after [`Simulation::refresh`].
+    /// High-frequency pressure noise (Pa): the RMS over the fluid particles of p_i minus the kernel-smoothed
+    /// (Shepard) pressure at x_i, ghosts included. Call after [`Simulation::refresh`].
+    pub fn pressure_noise(&self) -> f64 {
+        let n = self.fluid.len();
+        let sq: Vec<f64> = (0..n)
+            .into_par_iter()
+            .map(|i| {
+                let smooth = self.pressure_at(&self.fluid.pos[i]).unwrap_or(self.pressure[i]);
+                (self.pressure[i] - smooth).powi(2)
+            })
+            .collect();
+        (sq.iter().sum::<f64>() / n.max(1) as f64).sqrt()
+    }
+
     pub fn pressure_at(&self, x: &SVector<f64, D>) -> Option<f64> {
         let nf = self.fluid.len();
         let (mut s, mut w) = (0.0, 0.0);

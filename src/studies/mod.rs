@@ -2,6 +2,7 @@
 //! gathered into tables and a report against the published jets (`collect`) and figures (`figures`).
 //! Studies orchestrate; they hold no physics.
 
+pub mod charts;
 pub mod collect;
 pub mod figures;
 pub mod runner;

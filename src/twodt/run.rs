@@ -83,19 +83,6 @@ pub struct TwoDtResult {
     pub blowup: Option<String>,
 }
 
-/// Process CPU time (user + system) from /proc/self/stat, in s; 0 where unavailable.
-fn cpu_seconds() -> f64 {
-    let Ok(s) = std::fs::read_to_string("/proc/self/stat") else {
-        return 0.0;
-    };
-    let rest = s.rsplit(')').next().unwrap_or("");
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let tick = 100.0; // USER_HZ, 100 on Linux
-    let ut: f64 = f.get(11).and_then(|v| v.parse().ok()).unwrap_or(0.0);
-    let st: f64 = f.get(12).and_then(|v| v.parse().ok()).unwrap_or(0.0);
-    (ut + st) / tick
-}
-
 fn snapshot(scene: &mut Scene) -> Snapshot {
     let sim = &mut scene.sim;
     sim.refresh();
@@ -225,7 +212,7 @@ fn mean_finite(v: &[f64]) -> f64 {
 /// Runs a case and writes its outputs into `opts.out_dir`.
 pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> anyhow::Result<TwoDtResult> {
     let clock = Instant::now();
-    let cpu0 = cpu_seconds();
+    let cpu0 = crate::bench::cpu_seconds();
     let mut scene = build(hull.clone(), cfg)?;
     let g = scene.geom.clone();
     let n = scene.sim.n_fluid();
@@ -381,7 +368,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         particles: n,
         steps: scene.sim.steps,
         wall_seconds: clock.elapsed().as_secs_f64(),
-        cpu_seconds: cpu_seconds() - cpu0,
+        cpu_seconds: crate::bench::cpu_seconds() - cpu0,
         x_end_over_l: scene.profile.x_at(scene.sim.time),
         ke_after_settle,
         far_field_eta_over_d: far_eta,

@@ -1,0 +1,291 @@
+//! Speed against accuracy (`bowwave chart speed-accuracy`): a validation case run for every method variant at
+//! every resolution; the error of one validated quantity against the CPU seconds, on log axes, with the
+//! Pareto front (the runs no other run beats on both). And the stability map (`bowwave chart stability`):
+//! the case run over a grid of two method parameters, each run marked stable or not, with the diagnosis.
+
+use crate::cases::run::{run, RunOptions};
+use crate::cases::CaseFile;
+use crate::io::atomic::write_atomic;
+use crate::sph::{
+    density_diffusion::DensityDiffusion, integrator::Integrator, kernel::KernelKind, viscosity::Viscosity,
+};
+use std::path::{Path, PathBuf};
+
+/// A method variant, by name: `delta-sph` (the default scheme), `molteni` (Molteni–Colagrossi diffusion (5.4),
+/// no gradient correction), `wcsph` (no density diffusion), `wendland` (Wendland C2 kernel, h = 2 dx),
+/// `pc` (predictor–corrector at its default CFL), or `alpha=A`, `delta=D`, `cfl=C` for one parameter.
+pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
+    let n = &mut case.numerics;
+    match name {
+        "delta-sph" => n.density_diffusion = DensityDiffusion::DeltaSph,
+        "molteni" => n.density_diffusion = DensityDiffusion::MolteniColagrossi,
+        "wcsph" => n.density_diffusion = DensityDiffusion::None,
+        "wendland" => {
+            n.kernel = KernelKind::WendlandC2;
+            n.h_over_dx = None;
+        }
+        "pc" => {
+            n.integrator = Integrator::PredictorCorrector;
+            n.cfl = None;
+        }
+        "rk4" => {
+            n.integrator = Integrator::Rk4;
+            n.cfl = None;
+        }
+        other => {
+            let (k, v) = other.split_once('=').ok_or_else(|| {
+                anyhow::anyhow!(
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, alpha=A, delta=D or cfl=C"
+                )
+            })?;
+            let x: f64 = v
+                .parse()
+                .ok()
+                .filter(|x: &f64| x.is_finite() && *x >= 0.0)
+                .ok_or_else(|| anyhow::anyhow!("variant `{other}`: expected a number ≥ 0 after `=`"))?;
+            match k {
+                "alpha" => n.viscosity = Viscosity::Artificial { alpha: x },
+                "delta" => n.delta = x,
+                "cfl" => n.cfl = Some(x),
+                _ => anyhow::bail!("variant `{other}`: unknown parameter `{k}` (alpha, delta or cfl)"),
+            }
+        }
+    }
+    Ok(())
+}
+
+/// One run of the chart.
+#[derive(Clone, Debug)]
+pub struct Point {
+    pub variant: String,
+    pub res: f64,
+    pub cpu_seconds: f64,
+    pub particles: usize,
+    pub steps: u64,
+    /// Error of the chosen quantity; NaN if the run stopped early.
+    pub error: f64,
+    pub stopped: Option<String>,
+}
+
+/// The chosen quantity of a case: the first check whose label contains `quantity` (default: the first).
+fn error_of(result: &crate::cases::run::RunResult, quantity: Option<&str>) -> anyhow::Result<(String, f64)> {
+    let cs = crate::validation::checks(result)
+        .ok_or_else(|| anyhow::anyhow!("case `{}` has no validation checks", result.case.name))?;
+    let c = match quantity {
+        Some(q) => cs.iter().find(|c| c.quantity.contains(q)).ok_or_else(|| {
+            let names: Vec<&str> = cs.iter().map(|c| c.quantity.as_str()).collect();
+            anyhow::anyhow!(
+                "--quantity `{q}`: no check of `{}` matches; expected one of: {}",
+                result.case.name,
+                names.join(" | ")
+            )
+        })?,
+        None => cs.first().ok_or_else(|| anyhow::anyhow!("no checks"))?,
+    };
+    Ok((c.quantity.clone(), c.error))
+}
+
+/// Runs every variant at every resolution. CPU seconds are the process's user + system time of the run
+/// (all threads), so that they do not depend on how busy the machine was.
+pub fn speed_accuracy(
+    case: &CaseFile,
+    variants: &[String],
+    res: &[f64],
+    end_time: Option<f64>,
+    quantity: Option<&str>,
+) -> anyhow::Result<(String, Vec<Point>)> {
+    let mut points = vec![];
+    let mut label = String::new();
+    for v in variants {
+        let mut c = case.clone();
+        apply_variant(&mut c, v)?;
+        for &r in res {
+            let cpu0 = crate::bench::cpu_seconds();
+            let result = run(
+                &c,
+                &RunOptions {
+                    res: Some(r),
+                    end_time,
+                    out_dir: None,
+                    progress: false,
+                    vtk: false,
+                },
+            )?;
+            let cpu = crate::bench::cpu_seconds() - cpu0;
+            let (name, error) = match &result.blowup {
+                None => error_of(&result, quantity)?,
+                Some(_) => (String::new(), f64::NAN),
+            };
+            if !name.is_empty() {
+                label = name;
+            }
+            log::info!("{v} res {r}: error {error:.3e}, CPU {cpu:.1} s");
+            points.push(Point {
+                variant: v.clone(),
+                res: r,
+                cpu_seconds: cpu,
+                particles: result.n_fluid,
+                steps: result.steps,
+                error,
+                stopped: result.blowup.as_ref().map(|b| b.to_string()),
+            });
+        }
+    }
+    Ok((label, points))
+}
+
+/// Indices of the Pareto front (no other finished run has both less CPU and less error), by CPU.
+pub fn pareto_front(points: &[Point]) -> Vec<usize> {
+    let ok = |p: &Point| p.error.is_finite() && p.error > 0.0;
+    let mut front: Vec<usize> = (0..points.len())
+        .filter(|&i| ok(&points[i]))
+        .filter(|&i| {
+            !points.iter().any(|q| {
+                ok(q)
+                    && q.cpu_seconds <= points[i].cpu_seconds
+                    && q.error <= points[i].error
+                    && (q.cpu_seconds < points[i].cpu_seconds || q.error < points[i].error)
+            })
+        })
+        .collect();
+    front.sort_by(|&a, &b| points[a].cpu_seconds.total_cmp(&points[b].cpu_seconds));
+    front
+}
+
+/// Writes speed_accuracy.csv and speed_accuracy.png into `out`.
+pub fn write_speed_accuracy(out: &Path, case: &str, quantity: &str, points: &[Point]) -> anyhow::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+    let front = pareto_front(points);
+    let mut csv = String::from("case,variant,res,particles,steps,cpu_seconds,error,pareto,stopped\n");
+    for (i, p) in points.iter().enumerate() {
+        csv += &format!(
+            "{case},{},{},{},{},{:.3},{},{},{}\n",
+            p.variant,
+            p.res,
+            p.particles,
+            p.steps,
+            p.cpu_seconds,
+            p.error,
+            front.contains(&i),
+            p.stopped.clone().unwrap_or_default().replace(',', ";")
+        );
+    }
+    let csv_path = out.join("speed_accuracy.csv");
+    write_atomic(&csv_path, csv.as_bytes())?;
+    let mut variants: Vec<&str> = points.iter().map(|p| p.variant.as_str()).collect();
+    variants.dedup();
+    let mut series: Vec<crate::io::plot::Series> = variants
+        .iter()
+        .map(|v| crate::io::plot::Series {
+            name: v.to_string(),
+            points: points
+                .iter()
+                .filter(|p| p.variant == *v && p.error.is_finite() && p.error > 0.0)
+                .map(|p| (p.cpu_seconds, p.error))
+                .collect(),
+            style: crate::io::plot::Style::LineMarkers,
+        })
+        .collect();
+    series.push(crate::io::plot::Series {
+        name: "Pareto front".into(),
+        points: front
+            .iter()
+            .map(|&i| (points[i].cpu_seconds, points[i].error))
+            .collect(),
+        style: crate::io::plot::Style::Line,
+    });
+    let png = out.join("speed_accuracy.png");
+    crate::io::plot::log_log_plot(
+        &png,
+        &format!("{case}: error against CPU time (each line: one variant, resolution rising)"),
+        "CPU seconds",
+        quantity,
+        &series,
+    )?;
+    Ok(vec![csv_path, png])
+}
+
+/// One cell of the stability map.
+#[derive(Clone, Debug)]
+pub struct Cell {
+    pub a: String,
+    pub b: String,
+    pub stable: bool,
+    pub diagnosis: String,
+}
+
+/// Runs the case for every pair (variant of list A, variant of list B), e.g. alpha × delta or cfl ×
+/// integrator, and records whether it finished. A run that stops (NaN, particle out of the domain, time-step
+/// collapse) is unstable, with its diagnosis.
+pub fn stability(
+    case: &CaseFile,
+    a: &[String],
+    b: &[String],
+    res: f64,
+    end_time: Option<f64>,
+) -> anyhow::Result<Vec<Cell>> {
+    let mut cells = vec![];
+    for va in a {
+        for vb in b {
+            let mut c = case.clone();
+            apply_variant(&mut c, vb)?;
+            apply_variant(&mut c, va)?;
+            let r = run(
+                &c,
+                &RunOptions {
+                    res: Some(res),
+                    end_time,
+                    out_dir: None,
+                    progress: false,
+                    vtk: false,
+                },
+            )?;
+            cells.push(Cell {
+                a: va.clone(),
+                b: vb.clone(),
+                stable: r.blowup.is_none(),
+                diagnosis: r.blowup.map(|b| b.to_string()).unwrap_or_default(),
+            });
+        }
+    }
+    Ok(cells)
+}
+
+/// Writes stability.csv and stability.png (a grid of cells, green stable, red unstable).
+pub fn write_stability(out: &Path, case: &str, cells: &[Cell]) -> anyhow::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+    let mut csv = String::from("case,a,b,stable,diagnosis\n");
+    for c in cells {
+        csv += &format!(
+            "{case},{},{},{},{}\n",
+            c.a,
+            c.b,
+            c.stable,
+            c.diagnosis.replace(',', ";")
+        );
+    }
+    let csv_path = out.join("stability.csv");
+    write_atomic(&csv_path, csv.as_bytes())?;
+    let mut rows: Vec<&str> = cells.iter().map(|c| c.a.as_str()).collect();
+    rows.dedup();
+    let mut cols: Vec<&str> = cells.iter().map(|c| c.b.as_str()).collect();
+    cols.sort();
+    cols.dedup();
+    let grid: Vec<Vec<Option<bool>>> = rows
+        .iter()
+        .map(|r| {
+            cols.iter()
+                .map(|c| cells.iter().find(|x| x.a == *r && x.b == *c).map(|x| x.stable))
+                .collect()
+        })
+        .collect();
+    let png = out.join("stability.png");
+    crate::io::plot::label_grid(
+        &png,
+        &format!("{case}: stable (green) / stopped (red)"),
+        &rows,
+        &cols,
+        &grid,
+    )?;
+    Ok(vec![csv_path, png])
+}
