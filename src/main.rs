@@ -68,6 +68,10 @@ enum Command {
         /// graded rows are not yet relaxed well enough, see docs/twodt.md).
         #[arg(long, default_value_t = 1.0)]
         ratio: f64,
+        /// Density diffusion: delta-sph (eq. 5.2, the default), molteni-colagrossi (5.4) or none (standard
+        /// WCSPH), for method comparisons.
+        #[arg(long, default_value = "delta-sph")]
+        diffusion: String,
         /// Domain width W as a multiple of the beam B (thesis §10.1.2: 4).
         #[arg(long, default_value_t = 4.0)]
         width: f64,
@@ -77,6 +81,9 @@ enum Command {
         /// Where to stop: `plunge` (shortly after it), `transom`, or an x/L value (e.g. 1.3 for stern waves).
         #[arg(long, default_value = "plunge")]
         until: String,
+        /// With `--until plunge`: the x/L at which to give up if nothing has plunged (default: the transom).
+        #[arg(long)]
+        give_up_at: Option<f64>,
         /// Sound speed / sqrt(g L) (default: 10 × the expected largest velocity).
         #[arg(long)]
         c0: Option<f64>,
@@ -382,9 +389,9 @@ fn run() -> anyhow::Result<()> {
                         x.a,
                         x.b,
                         if x.stable {
-                            "stable".to_string()
+                            format!("stable, pressure noise {:.3} ρgL", x.noise)
                         } else {
-                            format!("stopped: {}", x.diagnosis)
+                            format!("unstable: {}", x.diagnosis)
                         }
                     );
                 }
@@ -473,9 +480,11 @@ fn run() -> anyhow::Result<()> {
             fr,
             dx,
             ratio,
+            diffusion,
             width,
             depth,
             until,
+            give_up_at,
             c0,
             detect_every,
             output_dx,
@@ -494,7 +503,14 @@ fn run() -> anyhow::Result<()> {
                 coarse_ratio: ratio,
                 width_over_beam: width,
                 depth_over_draft: depth,
+                diffusion: match diffusion.as_str() {
+                    "delta-sph" => bowwave::sph::density_diffusion::DensityDiffusion::DeltaSph,
+                    "molteni-colagrossi" => bowwave::sph::density_diffusion::DensityDiffusion::MolteniColagrossi,
+                    "none" => bowwave::sph::density_diffusion::DensityDiffusion::None,
+                    other => anyhow::bail!("--diffusion `{other}`: expected delta-sph, molteni-colagrossi or none"),
+                },
                 until: until.parse().map_err(anyhow::Error::msg)?,
+                give_up_at,
                 c0,
                 detect_every,
                 output_dx,

@@ -553,7 +553,7 @@ pub fn label_grid(
                 ))?;
                 let label = match v {
                     Some(true) => "stable",
-                    Some(false) => "stopped",
+                    Some(false) => "unstable",
                     None => "–",
                 };
                 root.draw(&Text::new(label, (x + 10, y + 15), font.clone()))?;

@@ -10,8 +10,8 @@ pub fn print(r: &TwoDtResult, out: &Path) {
         r.hull, r.fr, r.dx_over_l, r.dx_coarse_over_l, r.particles, r.steps, r.wall_seconds, r.cpu_seconds
     );
     println!(
-        "  settling left E_K/(M g D) = {:.2e}; far-field |η|/D ≤ {:.2e}; max Mach {:.3}; mass change {:.1e}",
-        r.ke_after_settle, r.far_field_eta_over_d, r.max_mach, r.mass_change
+        "  settling left E_K/(M g D) = {:.2e}; far-field |η|/D ≤ {:.2e}; max Mach {:.3}; mass change {:.1e}; pressure noise {:.3e} ρgD",
+        r.ke_after_settle, r.far_field_eta_over_d, r.max_mach, r.mass_change, r.pressure_noise_over_rho_g_d
     );
     if let Some(b) = &r.blowup {
         println!("  STOPPED EARLY: {b}");

@@ -76,6 +76,9 @@ pub struct TwoDtResult {
     pub max_mach: f64,
     /// (total mass at end − at start) / total mass.
     pub mass_change: f64,
+    /// Pressure noise at the end: RMS of p minus its kernel-smoothed field, / (ρ g D).
+    #[serde(default)]
+    pub pressure_noise_over_rho_g_d: f64,
     pub wall_corrections: u64,
     pub plunged: bool,
     pub plunge: Option<PlungeMetrics>,
@@ -359,6 +362,8 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         b.finish_and_clear();
     }
     let mass_end: f64 = scene.sim.fluid.mass.iter().sum();
+    scene.sim.refresh();
+    let noise = scene.sim.pressure_noise() / g.draft;
     let result = TwoDtResult {
         hull: hull.meta.name.clone(),
         fr: cfg.fr,
@@ -374,6 +379,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         far_field_eta_over_d: far_eta,
         max_mach,
         mass_change: (mass_end - total_mass) / total_mass,
+        pressure_noise_over_rho_g_d: noise,
         wall_corrections: scene.sim.wall_corrections,
         plunged: plunge.is_some(),
         plunge,

@@ -76,6 +76,9 @@ pub struct TwoDtConfig {
     pub detect_every: usize,
     /// x/L between outputs (series row, η(y) profile, VTK frame). Default 0.005.
     pub output_dx: f64,
+    /// Density diffusion: δ-SPH (5.2) by default; standard WCSPH (none) or Molteni–Colagrossi (5.4) as method
+    /// variants for the speed–accuracy comparison.
+    pub diffusion: crate::sph::density_diffusion::DensityDiffusion,
 }
 
 impl Default for TwoDtConfig {
@@ -96,6 +99,7 @@ impl Default for TwoDtConfig {
             settle_crossings: 1.0,
             detect_every: 10,
             output_dx: 0.005,
+            diffusion: Default::default(),
         }
     }
 }
@@ -283,6 +287,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let mut fluid = Fluid::<2>::default();
     let mut cfg_s = SolverConfig::new(dx_f, 1.0, c0, BodyForce::Uniform(V2::new(0.0, -1.0)));
     cfg_s.h = h;
+    cfg_s.diffusion = cfg.diffusion;
     cfg_s.domain = Some((
         V2::new(-support, -depth - support),
         V2::new(width + support, z_top + 10.0 * draft),
