@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 /// The result of one benchmark configuration.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct BenchResult {
+    pub variant: String,
     pub res: f64,
     pub threads: usize,
     pub fluid_particles: usize,
@@ -57,8 +58,9 @@ pub fn peak_rss_bytes() -> u64 {
 }
 
 /// Runs one configuration in this process (the thread count must already be set).
-pub fn bench_one(res: f64, end_star: f64) -> anyhow::Result<BenchResult> {
-    let case = cases::load("dam-break")?;
+pub fn bench_one(res: f64, end_star: f64, variant: &str) -> anyhow::Result<BenchResult> {
+    let mut case = cases::load("dam-break")?;
+    crate::studies::charts::apply_variant(&mut case, variant)?;
     let end = end_star * (case.scales.length / case.gravity_magnitude()).sqrt();
     let r = run(
         &case,
@@ -75,6 +77,7 @@ pub fn bench_one(res: f64, end_star: f64) -> anyhow::Result<BenchResult> {
     let total = (t.neighbour_search + t.ghost_mirroring + t.density_gradient + t.main_loop + t.update).max(1e-12);
     let rss = peak_rss_bytes();
     Ok(BenchResult {
+        variant: variant.to_string(),
         res,
         threads: rayon::current_num_threads(),
         fluid_particles: r.n_fluid,
@@ -93,40 +96,45 @@ pub fn bench_one(res: f64, end_star: f64) -> anyhow::Result<BenchResult> {
 }
 
 /// `bowwave bench`: every resolution × thread count in a child process, then a table.
-pub fn bench_cli(res: &[f64], end: f64, threads: &[usize]) -> anyhow::Result<()> {
+pub fn bench_cli(res: &[f64], end: f64, threads: &[usize], variants: &[String]) -> anyhow::Result<()> {
     let exe = std::env::current_exe()?;
     let mut results = vec![];
-    for &r in res {
-        for &n in threads {
-            eprintln!("bench: dam break H/dx = {r}, {n} thread(s), to t sqrt(g/H) = {end} ...");
-            let out = std::process::Command::new(&exe)
-                .args([
-                    "--threads",
-                    &n.to_string(),
-                    "bench-one",
-                    "--res",
-                    &r.to_string(),
-                    "--end",
-                    &end.to_string(),
-                ])
-                .output()?;
-            if !out.status.success() {
-                anyhow::bail!("bench-one failed: {}", String::from_utf8_lossy(&out.stderr));
+    for v in variants {
+        for &r in res {
+            for &n in threads {
+                eprintln!("bench: dam break H/dx = {r}, {n} thread(s), variant {v}, to t sqrt(g/H) = {end} ...");
+                let out = std::process::Command::new(&exe)
+                    .args([
+                        "--threads",
+                        &n.to_string(),
+                        "bench-one",
+                        "--res",
+                        &r.to_string(),
+                        "--end",
+                        &end.to_string(),
+                        "--variant",
+                        v,
+                    ])
+                    .output()?;
+                if !out.status.success() {
+                    anyhow::bail!("bench-one failed: {}", String::from_utf8_lossy(&out.stderr));
+                }
+                let b: BenchResult = serde_json::from_slice(&out.stdout)?;
+                results.push(b);
             }
-            let b: BenchResult = serde_json::from_slice(&out.stdout)?;
-            results.push(b);
         }
     }
-    println!("| H/dx | threads | fluid particles | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("| variant | H/dx | threads | fluid particles | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for b in &results {
         let base = results
             .iter()
-            .find(|o| o.res == b.res && o.threads == 1)
+            .find(|o| o.variant == b.variant && o.res == b.res && o.threads == 1)
             .map(|o| o.wall_seconds / b.wall_seconds)
             .unwrap_or(f64::NAN);
         println!(
-            "| {:.0} | {} | {} | {} | {:.1} | {:.3e} | {:.2} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
+            "| {} | {:.0} | {} | {} | {} | {:.1} | {:.3e} | {:.2} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
+            b.variant,
             b.res,
             b.threads,
             b.fluid_particles,

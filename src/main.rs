@@ -185,6 +185,10 @@ enum Command {
         /// Thread counts to compare, comma separated.
         #[arg(long, value_delimiter = ',', default_value = "1,2")]
         threads: Vec<usize>,
+        /// Method variants to compare, comma separated (as in `chart speed-accuracy`, e.g. `delta-sph,table`);
+        /// `delta-sph` is the case's defaults.
+        #[arg(long, value_delimiter = ',', default_value = "delta-sph")]
+        variants: Vec<String>,
     },
     /// Hull geometry: check a hull file, or generate the Wigley hull.
     Hull {
@@ -198,6 +202,8 @@ enum Command {
         res: f64,
         #[arg(long)]
         end: f64,
+        #[arg(long, default_value = "delta-sph")]
+        variant: String,
     },
     /// List the built-in cases, or print one as TOML to start a case file from.
     Cases {
@@ -290,7 +296,8 @@ enum ChartKind {
     SpeedAccuracy {
         /// Built-in case name or case file.
         case: String,
-        /// Method variants: delta-sph, molteni, wcsph, wendland, pc, rk4, alpha=A, delta=D, cfl=C.
+        /// Method variants: delta-sph, molteni, wcsph, wendland, pc, rk4, table (tabulated kernel gradient),
+        /// exact-kernel, alpha=A, delta=D, cfl=C.
         #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "molteni".to_string(), "wcsph".to_string(), "wendland".to_string(), "pc".to_string()])]
         variants: Vec<String>,
         /// Resolutions (reference length / dx).
@@ -306,13 +313,44 @@ enum ChartKind {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// 2D+t speed against accuracy: one hull at one Froude number, every variant at every fine spacing, run to
+    /// x/L = AT; the error is that of the bow-wave crest height there against a finer δ-SPH reference run.
+    /// Writes speed_accuracy.csv/.png and crest.csv.
+    Twodt {
+        /// Hull offsets file.
+        #[arg(long, default_value = "hulls/athena.csv")]
+        hull: PathBuf,
+        /// Ship Froude number U/sqrt(gL).
+        #[arg(long, default_value_t = 0.5)]
+        fr: f64,
+        /// 2D+t variants: delta-sph, molteni, wcsph, table (tabulated kernel gradient), cfl=C (RK4 CFL),
+        /// ratio=R (graded rows, coarse spacing R dx below 0.2 D).
+        #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "wcsph".to_string(), "table".to_string(), "cfl=2.5".to_string(), "ratio=1.5".to_string()])]
+        variants: Vec<String>,
+        /// Fine spacings dx/L of the chart, comma separated.
+        #[arg(long, value_delimiter = ',', default_values_t = vec![3e-3, 2e-3, 1.5e-3])]
+        dx: Vec<f64>,
+        /// Spacing dx/L of the δ-SPH reference run (finer than every --dx).
+        #[arg(long, default_value_t = 1e-3)]
+        reference_dx: f64,
+        /// x/L (from the stem) at which the crest height is measured.
+        #[arg(long, default_value_t = 0.2)]
+        at: f64,
+        /// Output folder (default out/chart-twodt-HULL-FR).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
     /// The case over a grid of two lists of variants (e.g. --rows alpha=0,alpha=0.005 --cols delta-sph,wcsph,
     /// or --rows cfl=1,cfl=2 --cols rk4,pc), each run marked stable or stopped with its diagnosis; writes
     /// stability.csv and .png.
     Stability {
+        /// Built-in case name or case file.
         case: String,
+        /// Variants along the rows, comma separated (e.g. alpha=0,alpha=0.005 or cfl=1,cfl=2); each run
+        /// combines one row with one column.
         #[arg(long, value_delimiter = ',')]
         rows: Vec<String>,
+        /// Variants along the columns, comma separated (e.g. wcsph,delta-sph or rk4,pc).
         #[arg(long, value_delimiter = ',')]
         cols: Vec<String>,
         /// Resolution (reference length / dx).
@@ -367,6 +405,46 @@ fn run() -> anyhow::Result<()> {
                 for f in charts::write_speed_accuracy(&out, &c.name, &label, &points)? {
                     println!("wrote {}", f.display());
                 }
+            }
+            ChartKind::Twodt {
+                hull,
+                fr,
+                variants,
+                dx,
+                reference_dx,
+                at,
+                out,
+            } => {
+                use bowwave::studies::twodt_chart;
+                let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
+                let name = offsets.meta.name.clone();
+                let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
+                let base = bowwave::twodt::scene::TwoDtConfig {
+                    fr,
+                    ..Default::default()
+                };
+                let chart = twodt_chart::twodt_speed_accuracy(surface, &base, &variants, &dx, reference_dx, at)?;
+                let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-twodt-{name}-{fr}")));
+                println!(
+                    "{name} Fr {fr}: crest height at x/L = {at}; reference (δ-SPH, dx/L = {reference_dx}) {:.4} D",
+                    chart.reference
+                );
+                println!("variant        dx/L   particles   steps   CPU s   crest/D      error   stopped");
+                for (p, v) in chart.points.iter().zip(&chart.values) {
+                    println!(
+                        "{:<12} {:>7.1e} {:>9} {:>7} {:>7.1} {:>8.4} {:>10.3e}   {}",
+                        p.variant,
+                        1.0 / p.res,
+                        p.particles,
+                        p.steps,
+                        p.cpu_seconds,
+                        v,
+                        p.error,
+                        p.stopped.clone().unwrap_or_default()
+                    );
+                }
+                twodt_chart::write_twodt_chart(&out, &format!("{name} Fr {fr} (2D+t)"), at, &chart)?;
+                println!("wrote {}", out.display());
             }
             ChartKind::Stability {
                 case,
@@ -551,8 +629,13 @@ fn run() -> anyhow::Result<()> {
             let ok = validation::validate_cli(case.as_deref(), res, out.as_deref())?;
             std::process::exit(if ok { 0 } else { 1 });
         }
-        Command::Bench { res, end, threads } => {
-            bench::bench_cli(&res, end, &threads)?;
+        Command::Bench {
+            res,
+            end,
+            threads,
+            variants,
+        } => {
+            bench::bench_cli(&res, end, &threads, &variants)?;
         }
         Command::Hull { action } => match action {
             HullAction::Check { file } => {
@@ -641,8 +724,8 @@ fn run() -> anyhow::Result<()> {
                 println!("wrote {}", out.display());
             }
         },
-        Command::BenchOne { res, end } => {
-            let r = bench::bench_one(res, end)?;
+        Command::BenchOne { res, end, variant } => {
+            let r = bench::bench_one(res, end, &variant)?;
             println!("{}", serde_json::to_string(&r)?);
         }
         Command::Cases { name } => match name {

@@ -94,6 +94,9 @@ pub struct Numerics {
     /// "mls" (first order, eq. 7.6; default) or "shepard".
     #[serde(default)]
     pub ghost_interpolation: crate::sph::solver::GhostInterpolation,
+    /// Tabulate the Gaussian's gradient in r² (a speed variant, `sph::kernel_table`); default false.
+    #[serde(default)]
+    pub kernel_table: bool,
 }
 
 fn default_kernel() -> KernelKind {
@@ -114,6 +117,7 @@ impl Default for Numerics {
             delta: default_delta(),
             viscosity: Viscosity::default(),
             ghost_interpolation: Default::default(),
+            kernel_table: false,
         }
     }
 }

@@ -137,6 +137,22 @@ impl<const D: usize> Kernel<D> {
         }
     }
 
+    /// F(r²) = (dW/dr)/r (1/m^{D+2}), so that ∇_i W_ij = r_ij F(|r_ij|²): the form the gather loops use.
+    /// For the Gaussian it needs no square root and no division; zero outside the support.
+    #[inline]
+    pub fn grad_factor(&self, r2: f64) -> f64 {
+        if r2 >= self.support * self.support {
+            return 0.0;
+        }
+        match self.kind {
+            KernelKind::RenormalizedGaussian => -2.0 * self.inv_h2 * self.norm * (-r2 * self.inv_h2).exp(),
+            KernelKind::WendlandC2 => {
+                let t = 1.0 - 0.5 * r2.sqrt() / self.h;
+                -5.0 * t * t * t * self.norm * self.inv_h2
+            }
+        }
+    }
+
     /// ∇_i W_ij for r_ij = r_i − r_j with |r_ij| = r (zero at r = 0).
     #[inline]
     pub fn grad(&self, rij: &SVector<f64, D>, r: f64) -> SVector<f64, D> {
@@ -192,6 +208,19 @@ mod tests {
             // Continuous at the cut: the value just inside is tiny compared with the peak.
             assert!(k.w(k.support * 0.999_999) < 1e-5 * k.w(0.0));
             assert!(k.w(0.0) > 0.0);
+        }
+    }
+
+    #[test]
+    fn grad_factor_times_r_is_dw_dr() {
+        for kind in [KernelKind::RenormalizedGaussian, KernelKind::WendlandC2] {
+            let k = Kernel::<2>::new(kind, 0.1);
+            for i in 1..300 {
+                let r = k.support * i as f64 / 300.0;
+                let a = k.grad_factor(r * r) * r;
+                assert!((a - k.dw_dr(r)).abs() <= 1e-12 * k.w(0.0) / k.h, "{kind:?} at r = {r}");
+            }
+            assert_eq!(k.grad_factor(k.support * k.support), 0.0);
         }
     }
 

@@ -10,6 +10,7 @@ pub mod equations;
 pub mod free_surface;
 pub mod integrator;
 pub mod kernel;
+pub mod kernel_table;
 pub mod mls;
 pub mod neighbours;
 pub mod particles;

@@ -103,6 +103,15 @@ impl<const D: usize> CellList<D> {
     where
         F: FnMut(usize, SVector<f64, D>, f64),
     {
+        self.for_each_within_r2(points, x, radius, |j, rij, d2| f(j, rij, d2.sqrt()));
+    }
+
+    /// As [`CellList::for_each_within`] but passes |x − x_j|² (no square root).
+    #[inline]
+    pub fn for_each_within_r2<F>(&self, points: &[SVector<f64, D>], x: &SVector<f64, D>, radius: f64, mut f: F)
+    where
+        F: FnMut(usize, SVector<f64, D>, f64),
+    {
         debug_assert!(radius <= self.cell * (1.0 + 1e-12));
         let r2 = radius * radius;
         let c = self.coords(x);
@@ -126,7 +135,7 @@ impl<const D: usize> CellList<D> {
                 let rij = x - points[j];
                 let d2 = rij.norm_squared();
                 if d2 < r2 {
-                    f(j, rij, d2.sqrt());
+                    f(j, rij, d2);
                 }
             }
         }

@@ -24,6 +24,7 @@ use super::equations::{
 };
 use super::integrator::Integrator;
 use super::kernel::{Kernel, KernelKind};
+use super::kernel_table::{GradientFactor, GradientTable};
 use super::mls::{mls_fit, MlsFit};
 use super::neighbours::CellList;
 use super::particles::Fluid;
@@ -53,6 +54,8 @@ pub struct SolverConfig<const D: usize> {
     pub dt_floor: f64,
     /// How ghost values are interpolated at their mirror points.
     pub ghost_interpolation: GhostInterpolation,
+    /// Tabulate the kernel-gradient factor in r² ([`GradientTable`]); a speed variant, Gaussian only.
+    pub kernel_table: bool,
 }
 
 /// Interpolation of the fluid at the ghosts' mirror points.
@@ -89,6 +92,7 @@ impl<const D: usize> SolverConfig<D> {
             domain: None,
             dt_floor: 1e-3 * h / c0,
             ghost_interpolation: GhostInterpolation::Mls,
+            kernel_table: false,
         }
     }
 }
@@ -203,11 +207,18 @@ pub struct Simulation<const D: usize> {
     /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
     neighbours: Vec<Vec<u32>>,
     ghosts_static: bool,
+    /// The tabulated gradient factor when `cfg.kernel_table` is set (and the kernel is tabulated).
+    grad_table: Option<GradientTable>,
 }
 
 impl<const D: usize> Simulation<D> {
     pub fn new(cfg: SolverConfig<D>, fluid: Fluid<D>, boundaries: Vec<Box<dyn Boundary<D>>>) -> Self {
         let kernel = Kernel::new(cfg.kernel, cfg.h);
+        let grad_table = if cfg.kernel_table {
+            GradientTable::new(&kernel)
+        } else {
+            None
+        };
         let mut sim = Simulation {
             cfg,
             kernel,
@@ -225,6 +236,7 @@ impl<const D: usize> Simulation<D> {
             grad_rho: vec![],
             neighbours: vec![],
             ghosts_static: false,
+            grad_table,
         };
         sim.place_ghosts(0.0);
         sim.ghosts_static = !sim.boundaries.iter().any(|b| b.moves());
@@ -354,6 +366,10 @@ impl<const D: usize> Simulation<D> {
         let clock = Instant::now();
         // The neighbour lists found here are kept for the main loop (stage 5).
         let need_grad = cfg.diffusion.needs_gradient();
+        let gf = match &self.grad_table {
+            Some(t) => GradientFactor::Table(t),
+            None => GradientFactor::Exact(kernel),
+        };
         self.neighbours.resize_with(nf, Vec::new);
         self.grad_rho = self
             .neighbours
@@ -362,13 +378,13 @@ impl<const D: usize> Simulation<D> {
             .map(|(i, list)| {
                 list.clear();
                 let mut acc = RenormalizedGradient::<D>::default();
-                cells.for_each_within(all_pos, &pos[i], kernel.support, |j, rij, r| {
+                cells.for_each_within_r2(all_pos, &pos[i], kernel.support, |j, rij, r2| {
                     if j == i {
                         return;
                     }
                     list.push(j as u32);
                     if need_grad {
-                        let gw = kernel.grad(&rij, r);
+                        let gw = rij * gf.at(r2);
                         let (rho_j, v_j) = if j < nf {
                             (rho[j], mass[j] / rho[j])
                         } else {
@@ -406,8 +422,8 @@ impl<const D: usize> Simulation<D> {
                 for &j in &neighbours[i] {
                     let j = j as usize;
                     let rij = pos[i] - all_pos[j];
-                    let r = rij.norm();
-                    let gw = kernel.grad(&rij, r);
+                    let r2 = rij.norm_squared();
+                    let gw = rij * gf.at(r2);
                     let (u_j, rho_j, p_j, v_j, grad_j) = if j < nf {
                         (vel[j], rho[j], pressure[j], mass[j] / rho[j], grad_rho[j])
                     } else {
@@ -415,7 +431,6 @@ impl<const D: usize> Simulation<D> {
                         (gs.vel[g], gs.rho[g], gs.p[g], gs.volume[g], gs.grad_rho[g])
                     };
                     let u_ji = u_j - u_i;
-                    let r2 = r * r;
                     drho += continuity::velocity_divergence(rho_i, &u_ji, &gw, v_j);
                     if kind != DensityDiffusion::None {
                         let psi = density_diffusion::psi(kind, rho_i, rho_j, &rij, r2, &grad_rho[i], &grad_j);

@@ -32,10 +32,12 @@ pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
             n.integrator = Integrator::Rk4;
             n.cfl = None;
         }
+        "table" => n.kernel_table = true,
+        "exact-kernel" => n.kernel_table = false,
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, alpha=A, delta=D or cfl=C"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, alpha=A, delta=D or cfl=C"
                 )
             })?;
             let x: f64 = v

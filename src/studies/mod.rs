@@ -7,6 +7,7 @@ pub mod collect;
 pub mod figures;
 pub mod runner;
 pub mod study_file;
+pub mod twodt_chart;
 
 use std::path::Path;
 

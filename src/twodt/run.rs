@@ -79,6 +79,10 @@ pub struct TwoDtResult {
     /// Pressure noise at the end: RMS of p minus its kernel-smoothed field, / (ρ g D).
     #[serde(default)]
     pub pressure_noise_over_rho_g_d: f64,
+    /// Highest free-surface elevation outside the waterline at the last output, / D: the bow-wave crest
+    /// height at the end of the run (the quantity of the 2D+t speed–accuracy chart).
+    #[serde(default)]
+    pub crest_at_end_over_d: f64,
     pub wall_corrections: u64,
     pub plunged: bool,
     pub plunge: Option<PlungeMetrics>,
@@ -280,6 +284,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let mut vtk_frames: Vec<(f64, String)> = vec![];
     let mut blowup = None;
     let mut bow = None;
+    let mut crest = f64::NAN;
     let steps0 = scene.sim.steps;
     loop {
         let x = scene.profile.x_at(scene.sim.time);
@@ -323,10 +328,12 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                     scene.sim.wall_corrections as f64,
                 ]);
                 let y_wl = waterline_half_breadth(&scene.profile.at(scene.sim.time).points);
+                crest = f64::NEG_INFINITY;
                 for (k, z) in eta.iter().enumerate() {
                     // Bins inside the hull's waterline would show the water under the hull, not a free surface.
                     if z.is_finite() && (k as f64 + 0.5) * bin > y_wl {
                         eta_table.push(vec![x, (k as f64 + 0.5) * bin, z / g.draft]);
+                        crest = crest.max(z / g.draft);
                     }
                 }
                 if opts.frames {
@@ -380,6 +387,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         max_mach,
         mass_change: (mass_end - total_mass) / total_mass,
         pressure_noise_over_rho_g_d: noise,
+        crest_at_end_over_d: crest,
         wall_corrections: scene.sim.wall_corrections,
         plunged: plunge.is_some(),
         plunge,

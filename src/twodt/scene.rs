@@ -79,6 +79,10 @@ pub struct TwoDtConfig {
     /// Density diffusion: δ-SPH (5.2) by default; standard WCSPH (none) or Molteni–Colagrossi (5.4) as method
     /// variants for the speed–accuracy comparison.
     pub diffusion: crate::sph::density_diffusion::DensityDiffusion,
+    /// Tabulated kernel gradient (`sph::kernel_table`), a speed variant; default false.
+    pub kernel_table: bool,
+    /// CFL of eq. (4.22); `None`: the integrator's default (RK4 1.5).
+    pub cfl: Option<f64>,
 }
 
 impl Default for TwoDtConfig {
@@ -100,6 +104,8 @@ impl Default for TwoDtConfig {
             detect_every: 10,
             output_dx: 0.005,
             diffusion: Default::default(),
+            kernel_table: false,
+            cfl: None,
         }
     }
 }
@@ -288,6 +294,10 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let mut cfg_s = SolverConfig::new(dx_f, 1.0, c0, BodyForce::Uniform(V2::new(0.0, -1.0)));
     cfg_s.h = h;
     cfg_s.diffusion = cfg.diffusion;
+    cfg_s.kernel_table = cfg.kernel_table;
+    if let Some(cfl) = cfg.cfl {
+        cfg_s.cfl = cfl;
+    }
     cfg_s.domain = Some((
         V2::new(-support, -depth - support),
         V2::new(width + support, z_top + 10.0 * draft),
