@@ -340,6 +340,15 @@ enum ChartKind {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Redraws speed_accuracy.png from the speed_accuracy.csv in DIR (after a plotting change, or after adding
+    /// rows of runs made on other machines) and rewrites the csv with its Pareto column recomputed; runs nothing.
+    Replot {
+        /// Folder holding speed_accuracy.csv.
+        dir: PathBuf,
+        /// Label of the error axis, for files written before the csv carried its `quantity` column.
+        #[arg(long)]
+        quantity: Option<String>,
+    },
     /// The case over a grid of two lists of variants (e.g. --rows alpha=0,alpha=0.005 --cols delta-sph,wcsph,
     /// or --rows cfl=1,cfl=2 --cols rk4,pc), each run marked stable or stopped with its diagnosis; writes
     /// stability.csv and .png.
@@ -445,6 +454,14 @@ fn run() -> anyhow::Result<()> {
                 }
                 twodt_chart::write_twodt_chart(&out, &format!("{name} Fr {fr} (2D+t)"), at, &chart)?;
                 println!("wrote {}", out.display());
+            }
+            ChartKind::Replot { dir, quantity } => {
+                use bowwave::studies::charts;
+                let (case, label, points) =
+                    charts::read_speed_accuracy(&dir.join("speed_accuracy.csv"), quantity.as_deref())?;
+                for f in charts::write_speed_accuracy(&dir, &case, &label, &points)? {
+                    println!("wrote {}", f.display());
+                }
             }
             ChartKind::Stability {
                 case,

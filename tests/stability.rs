@@ -133,15 +133,7 @@ fn twodt_wcsph_is_noisier_than_delta_sph() {
             diffusion,
             ..Default::default()
         };
-        let opts = run::TwoDtOptions {
-            out_dir: std::env::temp_dir().join(format!("bowwave-2dt-{name}")),
-            progress: false,
-            vtk: false,
-            plots: false,
-            frames: false,
-            multi: None,
-            label: String::new(),
-        };
+        let opts = run::TwoDtOptions::quiet(std::env::temp_dir().join(format!("bowwave-2dt-{name}")));
         run::run(hull.clone(), &cfg, &opts).unwrap()
     };
     let d = result(DensityDiffusion::DeltaSph, "delta");

@@ -76,13 +76,9 @@ fn athena_cfg(x0: Option<f64>, until: Until) -> TwoDtConfig {
 /// Outputs into `dir`, no progress bar; with `all`, VTK and plots too.
 fn quiet_options(dir: &std::path::Path, all: bool) -> TwoDtOptions {
     TwoDtOptions {
-        out_dir: dir.to_path_buf(),
-        progress: false,
         vtk: all,
         plots: all,
-        frames: false,
-        multi: None,
-        label: String::new(),
+        ..TwoDtOptions::quiet(dir.to_path_buf())
     }
 }
 

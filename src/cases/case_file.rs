@@ -82,7 +82,7 @@ pub struct Numerics {
     pub h_over_dx: Option<f64>,
     #[serde(default)]
     pub integrator: Integrator,
-    /// CFL of eq. (4.22); default per integrator (1.5 RK4, 0.3 predictor–corrector).
+    /// CFL of eq. (4.22); default per integrator (2.0 RK4, 0.5 predictor–corrector; `Integrator::default_cfl`).
     pub cfl: Option<f64>,
     #[serde(default)]
     pub density_diffusion: DensityDiffusion,

@@ -463,7 +463,8 @@ pub fn log_log_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series
         y0 = y0.min(p.1);
         y1 = y1.max(p.1);
     }
-    let (x0, x1, y0, y1) = (x0 / 1.5, x1 * 1.5, y0 / 1.5, y1 * 1.5);
+    // Snap to whole decades so that every axis carries labelled key points, even a narrow one.
+    let (x0, x1, y0, y1) = (decade_below(x0), decade_above(x1), decade_below(y0), decade_above(y1));
     let (w, h) = (1000u32, 650u32);
     let mut buf = vec![0u8; (w * h * 3) as usize];
     {
@@ -474,11 +475,22 @@ pub fn log_log_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series
             .margin(15)
             .x_label_area_size(45)
             .y_label_area_size(80)
-            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
+            .build_cartesian_2d(
+                (x0..x1)
+                    .log_scale()
+                    .with_key_points(log_ticks(x0, x1, &[1.0, 2.0, 5.0]))
+                    .with_light_points(log_ticks(x0, x1, &[3.0, 4.0, 6.0, 7.0, 8.0, 9.0])),
+                (y0..y1)
+                    .log_scale()
+                    .with_key_points(log_ticks(y0, y1, &[1.0, 2.0, 5.0]))
+                    .with_light_points(log_ticks(y0, y1, &[3.0, 4.0, 6.0, 7.0, 8.0, 9.0])),
+            )?;
         chart
             .configure_mesh()
             .x_desc(xlabel)
             .y_desc(ylabel)
+            .x_label_formatter(&|v| short_number(*v))
+            .y_label_formatter(&|v| short_number(*v))
             .label_style(("sans-serif", 14))
             .axis_desc_style(("sans-serif", 15))
             .draw()?;
@@ -500,8 +512,10 @@ pub fn log_log_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series
                     .legend(move |(x, y)| Circle::new((x + 10, y), 5, c.filled()));
             }
         }
+        // Upper right: error-against-cost and error-against-resolution data fall from upper left to lower right.
         chart
             .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .label_font(("sans-serif", 14))
@@ -513,17 +527,67 @@ pub fn log_log_plot(path: &Path, title: &str, xlabel: &str, ylabel: &str, series
     Ok(())
 }
 
+/// The largest power of ten not above `v` (v > 0).
+fn decade_below(v: f64) -> f64 {
+    10f64.powf(v.log10().floor())
+}
+
+/// The smallest power of ten not below `v` (v > 0); one decade above a value that is itself a power of ten.
+fn decade_above(v: f64) -> f64 {
+    let d = 10f64.powf(v.log10().ceil());
+    if d <= v {
+        d * 10.0
+    } else {
+        d
+    }
+}
+
+/// The values m·10^k (m from `mantissas`) within [lo, hi], rising.
+fn log_ticks(lo: f64, hi: f64, mantissas: &[f64]) -> Vec<f64> {
+    let mut out = vec![];
+    let mut d = decade_below(lo);
+    while d <= hi * (1.0 + 1e-12) {
+        for m in mantissas {
+            let v = m * d;
+            if v >= lo * (1.0 - 1e-12) && v <= hi * (1.0 + 1e-12) {
+                out.push(v);
+            }
+        }
+        d *= 10.0;
+    }
+    out
+}
+
+/// A tick label with at most three significant digits and no trailing zeros: 0.2, 30, 1e-5.
+fn short_number(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if !(1e-3..1e5).contains(&a) {
+        return format!("{v:.0e}");
+    }
+    let digits = (2 - a.log10().floor() as i32).max(0) as usize;
+    let s = format!("{v:.digits$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
 /// A grid of labelled cells coloured green (true), red (false) or grey (missing): rows down, columns across.
 pub fn label_grid(
     path: &Path,
     title: &str,
     rows: &[&str],
     cols: &[&str],
-    cells: &[Vec<Option<bool>>],
+    cells: &[Vec<Option<(bool, String)>>],
 ) -> anyhow::Result<()> {
     register_font();
     let (cw, ch) = (150u32, 50u32);
-    let (w, h) = (200 + cw * cols.len() as u32, 90 + ch * (rows.len() as u32 + 1));
+    let w = (200 + cw * cols.len() as u32).max(20 + 11 * title.chars().count() as u32);
+    let h = 90 + ch * (rows.len() as u32 + 1);
     let mut buf = vec![0u8; (w * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
@@ -543,8 +607,8 @@ pub fn label_grid(
             for (j, v) in cells[i].iter().enumerate() {
                 let x = (200 + j as u32 * cw) as i32;
                 let colour = match v {
-                    Some(true) => RGBColor(120, 200, 120),
-                    Some(false) => RGBColor(220, 90, 80),
+                    Some((true, _)) => RGBColor(120, 200, 120),
+                    Some((false, _)) => RGBColor(220, 90, 80),
                     None => RGBColor(200, 200, 200),
                 };
                 root.draw(&Rectangle::new(
@@ -552,11 +616,10 @@ pub fn label_grid(
                     colour.filled(),
                 ))?;
                 let label = match v {
-                    Some(true) => "stable",
-                    Some(false) => "unstable",
+                    Some((_, text)) => text.as_str(),
                     None => "–",
                 };
-                root.draw(&Text::new(label, (x + 10, y + 15), font.clone()))?;
+                root.draw(&Text::new(label.to_string(), (x + 10, y + 15), font.clone()))?;
             }
         }
         root.present()?;

@@ -644,8 +644,6 @@ impl<const D: usize> Simulation<D> {
         super::free_surface::detect(&self.kernel, &self.cells, &self.all_pos, &volume, nf, th)
     }
 
-    /// Shepard average of the pressure at `x` over fluid and ghost particles (Pa); `None` if no particle
-    /// is within the kernel support. Call after [`Simulation::refresh`].
     /// High-frequency pressure noise (Pa): the RMS over the fluid particles of p_i minus the kernel-smoothed
     /// (Shepard) pressure at x_i, ghosts included. Call after [`Simulation::refresh`].
     pub fn pressure_noise(&self) -> f64 {
@@ -660,6 +658,8 @@ impl<const D: usize> Simulation<D> {
         (sq.iter().sum::<f64>() / n.max(1) as f64).sqrt()
     }
 
+    /// Shepard average of the pressure at `x` over fluid and ghost particles (Pa); `None` if no particle
+    /// is within the kernel support. Call after [`Simulation::refresh`].
     pub fn pressure_at(&self, x: &SVector<f64, D>) -> Option<f64> {
         let nf = self.fluid.len();
         let (mut s, mut w) = (0.0, 0.0);

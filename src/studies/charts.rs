@@ -158,22 +158,104 @@ pub fn pareto_front(points: &[Point]) -> Vec<usize> {
 pub fn write_speed_accuracy(out: &Path, case: &str, quantity: &str, points: &[Point]) -> anyhow::Result<Vec<PathBuf>> {
     std::fs::create_dir_all(out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
     let front = pareto_front(points);
-    let mut csv = String::from("case,variant,res,particles,steps,cpu_seconds,error,pareto,stopped\n");
+    let mut w = csv::Writer::from_writer(vec![]);
+    w.write_record(CSV_HEADER)?;
     for (i, p) in points.iter().enumerate() {
-        csv += &format!(
-            "{case},{},{},{},{},{:.3},{},{},{}\n",
-            p.variant,
-            p.res,
-            p.particles,
-            p.steps,
-            p.cpu_seconds,
-            p.error,
-            front.contains(&i),
-            p.stopped.clone().unwrap_or_default().replace(',', ";")
-        );
+        w.write_record([
+            case.to_string(),
+            p.variant.clone(),
+            p.res.to_string(),
+            p.particles.to_string(),
+            p.steps.to_string(),
+            format!("{:.3}", p.cpu_seconds),
+            p.error.to_string(),
+            front.contains(&i).to_string(),
+            p.stopped.clone().unwrap_or_default(),
+            quantity.to_string(),
+        ])?;
     }
     let csv_path = out.join("speed_accuracy.csv");
-    write_atomic(&csv_path, csv.as_bytes())?;
+    write_atomic(&csv_path, &w.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?)?;
+    let png = out.join("speed_accuracy.png");
+    plot_speed_accuracy(&png, case, quantity, points)?;
+    Ok(vec![csv_path, png])
+}
+
+/// The columns of speed_accuracy.csv.
+const CSV_HEADER: [&str; 10] = [
+    "case",
+    "variant",
+    "res",
+    "particles",
+    "steps",
+    "cpu_seconds",
+    "error",
+    "pareto",
+    "stopped",
+    "quantity",
+];
+
+/// Reads a speed_accuracy.csv back: the case label, the quantity label and the points. Files written before
+/// the `quantity` column existed need `quantity` given.
+pub fn read_speed_accuracy(path: &Path, quantity: Option<&str>) -> anyhow::Result<(String, String, Vec<Point>)> {
+    let ctx = |what: String| anyhow::anyhow!("{}: {what}", path.display());
+    let mut r = csv::Reader::from_path(path).map_err(|e| ctx(format!("cannot read: {e}")))?;
+    let header: Vec<String> = r
+        .headers()
+        .map_err(|e| ctx(e.to_string()))?
+        .iter()
+        .map(String::from)
+        .collect();
+    let col = |name: &str| header.iter().position(|h| h == name);
+    let need = |name: &str| col(name).ok_or_else(|| ctx(format!("no column `{name}`; expected {CSV_HEADER:?}")));
+    let (kc, kv, kr, kp, ks, kt, ke, kx) = (
+        need("case")?,
+        need("variant")?,
+        need("res")?,
+        need("particles")?,
+        need("steps")?,
+        need("cpu_seconds")?,
+        need("error")?,
+        need("stopped")?,
+    );
+    let kq = col("quantity");
+    let (mut case, mut label) = (String::new(), quantity.map(String::from));
+    let mut points = vec![];
+    for (i, rec) in r.records().enumerate() {
+        let rec = rec.map_err(|e| ctx(format!("row {}: {e}", i + 1)))?;
+        let field = |k: usize, name: &str| -> anyhow::Result<&str> {
+            rec.get(k)
+                .ok_or_else(|| ctx(format!("row {}: field `{name}` missing", i + 1)))
+        };
+        let num = |k: usize, name: &str| -> anyhow::Result<f64> {
+            let v = field(k, name)?;
+            v.parse::<f64>()
+                .map_err(|_| ctx(format!("row {}: field `{name}`: expected a number, found `{v}`", i + 1)))
+        };
+        case = field(kc, "case")?.to_string();
+        if label.is_none() {
+            label = kq.and_then(|k| rec.get(k)).map(String::from);
+        }
+        let stopped = field(kx, "stopped")?;
+        points.push(Point {
+            variant: field(kv, "variant")?.to_string(),
+            res: num(kr, "res")?,
+            particles: num(kp, "particles")? as usize,
+            steps: num(ks, "steps")? as u64,
+            cpu_seconds: num(kt, "cpu_seconds")?,
+            error: num(ke, "error")?,
+            stopped: (!stopped.is_empty()).then(|| stopped.to_string()),
+        });
+    }
+    anyhow::ensure!(!points.is_empty(), "{}: no rows", path.display());
+    let label =
+        label.ok_or_else(|| ctx("no `quantity` column; give the quantity's label with --quantity".to_string()))?;
+    Ok((case, label, points))
+}
+
+/// Draws the error against CPU seconds, one line per variant, and the Pareto front.
+pub fn plot_speed_accuracy(png: &Path, case: &str, quantity: &str, points: &[Point]) -> anyhow::Result<()> {
+    let front = pareto_front(points);
     let mut variants: Vec<&str> = points.iter().map(|p| p.variant.as_str()).collect();
     variants.dedup();
     let mut series: Vec<crate::io::plot::Series> = variants
@@ -196,15 +278,13 @@ pub fn write_speed_accuracy(out: &Path, case: &str, quantity: &str, points: &[Po
             .collect(),
         style: crate::io::plot::Style::Line,
     });
-    let png = out.join("speed_accuracy.png");
     crate::io::plot::log_log_plot(
-        &png,
+        png,
         &format!("{case}: error against CPU time (each line: one variant, resolution rising)"),
         "CPU seconds",
         quantity,
         &series,
-    )?;
-    Ok(vec![csv_path, png])
+    )
 }
 
 /// One cell of the stability map.
@@ -287,23 +367,38 @@ pub fn write_stability(out: &Path, case: &str, cells: &[Cell]) -> anyhow::Result
     }
     let csv_path = out.join("stability.csv");
     write_atomic(&csv_path, csv.as_bytes())?;
-    let mut rows: Vec<&str> = cells.iter().map(|c| c.a.as_str()).collect();
-    rows.dedup();
-    let mut cols: Vec<&str> = cells.iter().map(|c| c.b.as_str()).collect();
-    cols.sort();
-    cols.dedup();
-    let grid: Vec<Vec<Option<bool>>> = rows
+    // Rows and columns in the order they were given.
+    let mut rows: Vec<&str> = vec![];
+    let mut cols: Vec<&str> = vec![];
+    for c in cells {
+        if !rows.contains(&c.a.as_str()) {
+            rows.push(&c.a);
+        }
+        if !cols.contains(&c.b.as_str()) {
+            cols.push(&c.b);
+        }
+    }
+    let grid: Vec<Vec<Option<(bool, String)>>> = rows
         .iter()
         .map(|r| {
             cols.iter()
-                .map(|c| cells.iter().find(|x| x.a == *r && x.b == *c).map(|x| x.stable))
+                .map(|c| {
+                    cells.iter().find(|x| x.a == *r && x.b == *c).map(|x| {
+                        let text = if x.noise.is_finite() {
+                            format!("noise {:.3}", x.noise)
+                        } else {
+                            "stopped".to_string()
+                        };
+                        (x.stable, text)
+                    })
+                })
                 .collect()
         })
         .collect();
     let png = out.join("stability.png");
     crate::io::plot::label_grid(
         &png,
-        &format!("{case}: stable (green) / stopped or noise > {NOISE_LIMIT} ρgL (red)"),
+        &format!("{case}: pressure noise / (ρgL) at the end; green: stable, red: stopped or noise > {NOISE_LIMIT}"),
         &rows,
         &cols,
         &grid,

@@ -63,15 +63,7 @@ fn one_run(
     cfg.dx = Some(dx);
     cfg.until = Until::X(at);
     cfg.output_dx = (at / 10.0).max(0.005);
-    let opts = TwoDtOptions {
-        out_dir: std::env::temp_dir().join(format!("bowwave-chart-twodt-{}", std::process::id())),
-        progress: false,
-        vtk: false,
-        plots: false,
-        frames: false,
-        multi: None,
-        label: String::new(),
-    };
+    let opts = TwoDtOptions::quiet(std::env::temp_dir().join(format!("bowwave-chart-twodt-{}", std::process::id())));
     let r = run(hull.clone(), &cfg, &opts);
     let _ = std::fs::remove_dir_all(&opts.out_dir);
     r

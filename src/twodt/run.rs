@@ -30,6 +30,21 @@ pub struct TwoDtOptions {
     pub label: String,
 }
 
+impl TwoDtOptions {
+    /// Results and tables only, into `out_dir`: no progress bar, VTK, plots or frames (tests, charts).
+    pub fn quiet(out_dir: PathBuf) -> Self {
+        TwoDtOptions {
+            out_dir,
+            progress: false,
+            vtk: false,
+            plots: false,
+            frames: false,
+            multi: None,
+            label: String::new(),
+        }
+    }
+}
+
 /// Everything measured at the plunge (non-dimensional as named).
 #[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
 pub struct PlungeMetrics {

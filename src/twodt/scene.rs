@@ -81,7 +81,7 @@ pub struct TwoDtConfig {
     pub diffusion: crate::sph::density_diffusion::DensityDiffusion,
     /// Tabulated kernel gradient (`sph::kernel_table`), a speed variant; default false.
     pub kernel_table: bool,
-    /// CFL of eq. (4.22); `None`: the integrator's default (RK4 1.5).
+    /// CFL of eq. (4.22); `None`: the integrator's default (RK4 2.0).
     pub cfl: Option<f64>,
 }
 
