@@ -130,10 +130,10 @@ pub fn bench_cli(res: &[f64], end: f64, threads: &[usize], variants: &[String]) 
         let base = results
             .iter()
             .find(|o| o.variant == b.variant && o.res == b.res && o.threads == 1)
-            .map(|o| o.wall_seconds / b.wall_seconds)
-            .unwrap_or(f64::NAN);
+            .map(|o| format!("{:.2}", o.wall_seconds / b.wall_seconds))
+            .unwrap_or_else(|| "–".into()); // no 1-thread run of this variant and resolution to compare with
         println!(
-            "| {} | {:.0} | {} | {} | {} | {:.1} | {:.3e} | {:.2} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
+            "| {} | {:.0} | {} | {} | {} | {:.1} | {:.3e} | {} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
             b.variant,
             b.res,
             b.threads,

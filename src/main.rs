@@ -37,6 +37,10 @@ enum Command {
         /// No progress bar.
         #[arg(long, short)]
         quiet: bool,
+        /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
+        /// (by default such a rise is diagnosed as an unstable time integration or a non-conservative term).
+        #[arg(long)]
+        allow_energy_growth: bool,
     },
     /// Run validation cases and print their errors against analytic solutions and published data;
     /// exits non-zero when a tolerance is missed.
@@ -72,6 +76,10 @@ enum Command {
         /// WCSPH), for method comparisons.
         #[arg(long, default_value = "delta-sph")]
         diffusion: String,
+        /// Evaluate the Gaussian kernel's gradient at every pair instead of from its table in r² (the default
+        /// table changes positions by ~1e-6 dx and saves 10–25 % of the CPU; docs/speed-accuracy.md).
+        #[arg(long)]
+        exact_kernel: bool,
         /// Domain width W as a multiple of the beam B (thesis §10.1.2: 4).
         #[arg(long, default_value_t = 4.0)]
         width: f64,
@@ -117,7 +125,9 @@ enum Command {
     /// validated quantity's value and error per resolution, the observed order (thesis appendix C) and a
     /// Richardson estimate with an uncertainty band; writes converge.csv.
     Converge {
-        /// Built-in case name (see `bowwave cases`) or case file.
+        /// Built-in case name (see `bowwave cases`), case file, or `twodt` for a 2D+t run of --hull at --fr
+        /// at the spacings --dx (its quantities: the jet metrics at the plunge when every run plunges, and
+        /// the crest height at the end).
         case: String,
         /// Resolutions (reference length / dx), coarse to fine; a constant ratio allows the extrapolation.
         #[arg(long, value_delimiter = ',', default_values_t = vec![20.0, 40.0, 80.0])]
@@ -125,6 +135,21 @@ enum Command {
         /// End time override (s).
         #[arg(long)]
         end: Option<f64>,
+        /// twodt: hull offsets file.
+        #[arg(long, default_value = "hulls/athena.csv")]
+        hull: PathBuf,
+        /// twodt: ship Froude number U/sqrt(gL).
+        #[arg(long, default_value_t = 0.5)]
+        fr: f64,
+        /// twodt: fine spacings dx/L, coarse to fine (the thesis's Athena study: 2.7e-4,1.9e-4,1.35e-4).
+        #[arg(long, value_delimiter = ',', default_values_t = vec![3e-3, 2e-3, 1.333e-3])]
+        dx: Vec<f64>,
+        /// twodt: where each run stops: plunge (plus a margin), transom, or an x/L value.
+        #[arg(long, default_value = "plunge")]
+        until: String,
+        /// twodt: x/L at which a run that has not plunged gives up.
+        #[arg(long)]
+        give_up_at: Option<f64>,
         /// Output folder for converge.csv (default out/converge-CASE).
         #[arg(long)]
         out: Option<PathBuf>,
@@ -296,8 +321,8 @@ enum ChartKind {
     SpeedAccuracy {
         /// Built-in case name or case file.
         case: String,
-        /// Method variants: delta-sph, molteni, wcsph, wendland, pc, rk4, table (tabulated kernel gradient),
-        /// exact-kernel, alpha=A, delta=D, cfl=C.
+        /// Method variants: delta-sph, molteni, wcsph, wendland, pc, rk4, table (tabulated kernel gradient, the
+        /// default), exact-kernel (the Gaussian evaluated at every pair), alpha=A, delta=D, cfl=C, h=H (h/dx).
         #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "molteni".to_string(), "wcsph".to_string(), "wendland".to_string(), "pc".to_string()])]
         variants: Vec<String>,
         /// Resolutions (reference length / dx).
@@ -323,9 +348,9 @@ enum ChartKind {
         /// Ship Froude number U/sqrt(gL).
         #[arg(long, default_value_t = 0.5)]
         fr: f64,
-        /// 2D+t variants: delta-sph, molteni, wcsph, table (tabulated kernel gradient), cfl=C (RK4 CFL),
-        /// ratio=R (graded rows, coarse spacing R dx below 0.2 D).
-        #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "wcsph".to_string(), "table".to_string(), "cfl=2.5".to_string(), "ratio=1.5".to_string()])]
+        /// 2D+t variants: delta-sph, molteni, wcsph, table (tabulated kernel gradient, the default),
+        /// exact-kernel, cfl=C (RK4 CFL), ratio=R (graded rows, coarse spacing R dx below 0.2 D).
+        #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "wcsph".to_string(), "exact-kernel".to_string(), "cfl=2.5".to_string(), "ratio=1.5".to_string()])]
         variants: Vec<String>,
         /// Fine spacings dx/L of the chart, comma separated.
         #[arg(long, value_delimiter = ',', default_values_t = vec![3e-3, 2e-3, 1.5e-3])]
@@ -496,11 +521,34 @@ fn run() -> anyhow::Result<()> {
                 }
             }
         },
-        Command::Converge { case, res, end, out } => {
-            let c = bowwave::cases::load(&case)?;
-            let conv = bowwave::convergence::converge(&c, &res, end)?;
+        Command::Converge {
+            case,
+            res,
+            end,
+            hull,
+            fr,
+            dx,
+            until,
+            give_up_at,
+            out,
+        } => {
+            let (conv, name) = if case == "twodt" {
+                let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
+                let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
+                let base = bowwave::twodt::scene::TwoDtConfig {
+                    fr,
+                    until: until.parse().map_err(anyhow::Error::msg)?,
+                    give_up_at,
+                    ..Default::default()
+                };
+                let conv = bowwave::studies::twodt_convergence::converge_twodt(surface, &base, &dx)?;
+                (conv, format!("twodt-{}-fr{fr}", offsets.meta.name))
+            } else {
+                let c = bowwave::cases::load(&case)?;
+                (bowwave::convergence::converge(&c, &res, end)?, c.name.clone())
+            };
             print!("{}", conv.report());
-            let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{}", c.name)));
+            let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{name}")));
             std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
             bowwave::io::atomic::write_atomic(&out.join("converge.csv"), conv.csv().as_bytes())?;
             println!("table in {}", out.join("converge.csv").display());
@@ -576,6 +624,7 @@ fn run() -> anyhow::Result<()> {
             dx,
             ratio,
             diffusion,
+            exact_kernel,
             width,
             depth,
             until,
@@ -604,6 +653,7 @@ fn run() -> anyhow::Result<()> {
                     "none" => bowwave::sph::density_diffusion::DensityDiffusion::None,
                     other => anyhow::bail!("--diffusion `{other}`: expected delta-sph, molteni-colagrossi or none"),
                 },
+                kernel_table: !exact_kernel,
                 until: until.parse().map_err(anyhow::Error::msg)?,
                 give_up_at,
                 c0,
@@ -636,10 +686,19 @@ fn run() -> anyhow::Result<()> {
             end,
             no_vtk,
             quiet,
+            allow_energy_growth,
         } => {
             let case = cases::load(&case)?;
             let out = out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
-            let code = validation::run_and_report(&case, res, end, &out, !no_vtk, !quiet)?;
+            let opts = cases::run::RunOptions {
+                res,
+                end_time: end,
+                progress: !quiet,
+                vtk: !no_vtk,
+                allow_energy_growth,
+                ..Default::default()
+            };
+            let code = validation::run_and_report(&case, &out, opts)?;
             std::process::exit(code);
         }
         Command::Validate { case, res, out } => {

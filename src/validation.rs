@@ -491,20 +491,11 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
 
 /// `bowwave run`: runs a case with progress and outputs, prints where they went and the case's checks.
 /// Returns the process exit code (2 after a blow-up).
-pub fn run_and_report(
-    case: &CaseFile,
-    res: Option<f64>,
-    end: Option<f64>,
-    out: &Path,
-    vtk: bool,
-    progress: bool,
-) -> anyhow::Result<i32> {
+pub fn run_and_report(case: &CaseFile, out: &Path, opts: RunOptions) -> anyhow::Result<i32> {
+    let end = opts.end_time;
     let opts = RunOptions {
-        res,
-        end_time: end,
         out_dir: Some(out.to_path_buf()),
-        progress,
-        vtk,
+        ..opts
     };
     let r = run(case, &opts)?;
     let mut files = r.files.clone();

@@ -9,8 +9,9 @@ use bowwave::sph::solver::BlowUpReason;
 
 #[test]
 fn cfl_far_above_the_stable_limit_stops_with_a_diagnosis() {
-    // The predictor–corrector at CFL 2.5 (5× its default) creates energy and throws particles out (measured:
-    // blow-up at t* ≈ 4 at H/dx = 20).
+    // The predictor–corrector at CFL 2.5 (5× its default) creates energy (+0.56 MgH) and, depending on
+    // round-off, throws particles out or runs to the end with a pressure noise of 2 ρgH; either way the
+    // run must stop with a diagnosis.
     let text = cases::builtin::builtin_text("dam-break").unwrap().replace(
         "integrator = \"rk4\"",
         "integrator = \"predictor-corrector\"\ncfl = 2.5",
@@ -28,7 +29,10 @@ fn cfl_far_above_the_stable_limit_stops_with_a_diagnosis() {
     println!("diagnosis: {b}");
     assert!(matches!(
         b.reason,
-        BlowUpReason::NotFinite | BlowUpReason::LeftDomain | BlowUpReason::TimeStepCollapse { .. }
+        BlowUpReason::NotFinite
+            | BlowUpReason::LeftDomain
+            | BlowUpReason::TimeStepCollapse { .. }
+            | BlowUpReason::EnergyGrowth { .. }
     ));
     assert!(b.to_string().contains("t = "));
     // The kept state is the last good one: finite and inside the domain.
@@ -36,6 +40,35 @@ fn cfl_far_above_the_stable_limit_stops_with_a_diagnosis() {
         assert!(p.x.is_finite() && p.y.is_finite() && p.x > -0.3 && p.x < 3.52 && p.y > -0.3);
     }
     assert!(r.sim.time < case.output.end_time);
+}
+
+/// Regression: RK4 at CFL 4 (twice its default) never produced a NaN or a lost particle, so it ran to the end
+/// and its noisy result (pressure noise 0.52 ρgH against 0.11) was reported as a normal run. Its mechanical
+/// energy rises by 4.9e-3 MgH at t√(g/H) ≈ 0.18, which the case runner now diagnoses.
+#[test]
+fn unstable_cfl_that_never_produces_nan_is_still_diagnosed() {
+    let dam = cases::builtin::builtin_text("dam-break").unwrap();
+    let with_cfl = |cfl: f64| {
+        let text = dam.replace("integrator = \"rk4\"", &format!("integrator = \"rk4\"\ncfl = {cfl}"));
+        let case = CaseFile::parse(&text, "cfl").unwrap();
+        run(
+            &case,
+            &RunOptions {
+                res: Some(20.0),
+                end_time: Some(0.5 * (0.6f64 / 9.81).sqrt()),
+                ..Default::default()
+            },
+        )
+        .unwrap()
+    };
+    let unstable = with_cfl(4.0);
+    let b = unstable.blowup.expect("RK4 at CFL 4 gains energy and must be stopped");
+    let BlowUpReason::EnergyGrowth { gain, limit } = b.reason else {
+        panic!("expected an energy-growth diagnosis, got {b}");
+    };
+    assert!(gain > limit && b.to_string().contains("mechanical energy grew"));
+    // The default CFL on the same case and interval is not stopped.
+    assert!(with_cfl(2.0).blowup.is_none());
 }
 
 fn err_of(text: &str) -> String {

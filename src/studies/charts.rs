@@ -13,7 +13,8 @@ use std::path::{Path, PathBuf};
 
 /// A method variant, by name: `delta-sph` (the default scheme), `molteni` (Molteni–Colagrossi diffusion (5.4),
 /// no gradient correction), `wcsph` (no density diffusion), `wendland` (Wendland C2 kernel, h = 2 dx),
-/// `pc` (predictor–corrector at its default CFL), or `alpha=A`, `delta=D`, `cfl=C` for one parameter.
+/// `pc` (predictor–corrector at its default CFL), `table`/`exact-kernel` (tabulated or exact kernel gradient),
+/// or `alpha=A`, `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter.
 pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
     let n = &mut case.numerics;
     match name {
@@ -37,7 +38,7 @@ pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, alpha=A, delta=D or cfl=C"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, alpha=A, delta=D, cfl=C or h=H (h/dx)"
                 )
             })?;
             let x: f64 = v
@@ -49,7 +50,10 @@ pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
                 "alpha" => n.viscosity = Viscosity::Artificial { alpha: x },
                 "delta" => n.delta = x,
                 "cfl" => n.cfl = Some(x),
-                _ => anyhow::bail!("variant `{other}`: unknown parameter `{k}` (alpha, delta or cfl)"),
+                "h" if x > 0.0 => n.h_over_dx = Some(x),
+                _ => anyhow::bail!(
+                    "variant `{other}`: expected alpha=A, delta=D, cfl=C or h=H (H > 0); `{k}` is none of these"
+                ),
             }
         }
     }
@@ -108,9 +112,7 @@ pub fn speed_accuracy(
                 &RunOptions {
                     res: Some(r),
                     end_time,
-                    out_dir: None,
-                    progress: false,
-                    vtk: false,
+                    ..Default::default()
                 },
             )?;
             let cpu = crate::bench::cpu_seconds() - cpu0;
@@ -324,9 +326,7 @@ pub fn stability(
                 &RunOptions {
                     res: Some(res),
                     end_time,
-                    out_dir: None,
-                    progress: false,
-                    vtk: false,
+                    ..Default::default()
                 },
             )?;
             let scale = c.fluid.rho0 * c.gravity_magnitude() * c.scales.length;
@@ -404,4 +404,27 @@ pub fn write_stability(out: &Path, case: &str, cells: &[Cell]) -> anyhow::Result
         &grid,
     )?;
     Ok(vec![csv_path, png])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn variants_set_their_parameter_and_bad_ones_are_refused() {
+        let mut c = crate::cases::load("dam-break").unwrap();
+        assert!(c.numerics.kernel_table, "the tabulated gradient is the default");
+        for v in ["exact-kernel", "h=1.5", "cfl=2.5", "alpha=0.01", "molteni"] {
+            apply_variant(&mut c, v).unwrap();
+        }
+        let n = &c.numerics;
+        assert!(!n.kernel_table);
+        assert_eq!(n.h_over_dx, Some(1.5));
+        assert_eq!(n.cfl, Some(2.5));
+        assert_eq!(n.density_diffusion, DensityDiffusion::MolteniColagrossi);
+        for bad in ["h=0", "h=-1", "cfl=x", "speed=2", "gauss"] {
+            let e = apply_variant(&mut c, bad).unwrap_err().to_string();
+            assert!(e.contains(bad) && e.contains("expected"), "{e}");
+        }
+    }
 }

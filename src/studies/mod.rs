@@ -8,6 +8,7 @@ pub mod figures;
 pub mod runner;
 pub mod study_file;
 pub mod twodt_chart;
+pub mod twodt_convergence;
 
 use std::path::Path;
 

@@ -16,13 +16,14 @@ use std::path::Path;
 use std::sync::Arc;
 
 /// Applies a 2D+t method variant by name: `delta-sph` (the default), `molteni`, `wcsph`, `table` (tabulated
-/// kernel gradient), `cfl=C` (RK4 CFL) or `ratio=R` (graded rows, dx_c = R dx_f).
+/// kernel gradient, the default) or `exact-kernel`, `cfl=C` (RK4 CFL) or `ratio=R` (graded rows, dx_c = R dx_f).
 pub fn apply_twodt_variant(cfg: &mut TwoDtConfig, name: &str) -> anyhow::Result<()> {
     match name {
         "delta-sph" => cfg.diffusion = DensityDiffusion::DeltaSph,
         "molteni" => cfg.diffusion = DensityDiffusion::MolteniColagrossi,
         "wcsph" => cfg.diffusion = DensityDiffusion::None,
         "table" => cfg.kernel_table = true,
+        "exact-kernel" => cfg.kernel_table = false,
         other => {
             let parsed = other.split_once('=').and_then(|(k, v)| {
                 v.parse::<f64>()
@@ -34,7 +35,7 @@ pub fn apply_twodt_variant(cfg: &mut TwoDtConfig, name: &str) -> anyhow::Result<
                 Some(("cfl", x)) => cfg.cfl = Some(x),
                 Some(("ratio", x)) if x >= 1.0 => cfg.coarse_ratio = x,
                 _ => anyhow::bail!(
-                    "2D+t variant `{other}`: expected delta-sph, molteni, wcsph, table, cfl=C (C > 0) or ratio=R (R ≥ 1)"
+                    "2D+t variant `{other}`: expected delta-sph, molteni, wcsph, table, exact-kernel, cfl=C (C > 0) or ratio=R (R ≥ 1)"
                 ),
             }
         }
@@ -145,11 +146,12 @@ mod tests {
     #[test]
     fn twodt_variants_set_their_field_and_bad_names_are_refused() {
         let mut c = TwoDtConfig::default();
-        for v in ["wcsph", "table", "cfl=2.5", "ratio=1.5"] {
+        assert!(c.kernel_table, "the tabulated kernel gradient is the default");
+        for v in ["wcsph", "exact-kernel", "cfl=2.5", "ratio=1.5"] {
             apply_twodt_variant(&mut c, v).unwrap();
         }
         assert_eq!(c.diffusion, DensityDiffusion::None);
-        assert!(c.kernel_table);
+        assert!(!c.kernel_table);
         assert_eq!(c.cfl, Some(2.5));
         assert_eq!(c.coarse_ratio, 1.5);
         for bad in ["wendland", "ratio=0.5", "cfl=-1", "cfl=x", "speed=2"] {
