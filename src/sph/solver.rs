@@ -135,6 +135,18 @@ pub enum BlowUpReason {
     },
 }
 
+impl BlowUpReason {
+    /// A few words for a chart cell.
+    pub fn short(&self) -> &'static str {
+        match self {
+            BlowUpReason::NotFinite => "NaN",
+            BlowUpReason::LeftDomain => "left domain",
+            BlowUpReason::TimeStepCollapse { .. } => "dt collapse",
+            BlowUpReason::EnergyGrowth { .. } => "energy grew",
+        }
+    }
+}
+
 /// A diagnosis of a blown-up run; the simulation keeps the last good state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BlowUp {

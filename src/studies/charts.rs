@@ -335,7 +335,7 @@ pub fn stability(
                 Some(_) => f64::NAN,
             };
             let diagnosis = match &r.blowup {
-                Some(b) => b.to_string(),
+                Some(b) => format!("stopped ({}): {b}", b.reason.short()),
                 None if noise > NOISE_LIMIT => format!("pressure noise {noise:.3} ρgL above {NOISE_LIMIT}"),
                 None => String::new(),
             };
@@ -387,7 +387,8 @@ pub fn write_stability(out: &Path, case: &str, cells: &[Cell]) -> anyhow::Result
                         let text = if x.noise.is_finite() {
                             format!("noise {:.3}", x.noise)
                         } else {
-                            "stopped".to_string()
+                            // "stopped (reason): full diagnosis" → "stopped (reason)".
+                            x.diagnosis.split(':').next().unwrap_or("stopped").to_string()
                         };
                         (x.stable, text)
                     })
