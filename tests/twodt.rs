@@ -92,9 +92,20 @@ fn athena() -> Arc<HullSurface> {
 /// 0.5 % of D.
 #[test]
 fn still_tank_before_the_stem_stays_at_rest() {
-    let cfg = athena_cfg(Some(-0.4), Until::X(-0.2));
-    let dir = std::env::temp_dir().join(format!("bowwave-still-tank-{}", std::process::id()));
-    let r = run(athena(), &cfg, &quiet_options(&dir, false)).expect("still tank");
+    let uniform = TwoDtConfig {
+        coarse_ratio: 1.0,
+        ..athena_cfg(Some(-0.4), Until::X(-0.2))
+    };
+    let (ke_max, far) = still_tank(&uniform, "uniform");
+    assert!(ke_max < 1e-6, "E_K/(M g D) = {ke_max}");
+    assert!(far < 0.005);
+}
+
+/// Largest E_K/(M g D) over the series and the far-field level / D of a still-tank run (section before the
+/// stem from x/L = −0.4 to −0.2).
+fn still_tank(cfg: &TwoDtConfig, label: &str) -> (f64, f64) {
+    let dir = std::env::temp_dir().join(format!("bowwave-still-tank-{label}-{}", std::process::id()));
+    let r = run(athena(), cfg, &quiet_options(&dir, false)).expect("still tank");
     let series = std::fs::read_to_string(dir.join("series.csv")).expect("series");
     let mut lines = series.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -103,12 +114,60 @@ fn still_tank_before_the_stem_stays_at_rest() {
         .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
         .fold(0.0, f64::max);
     println!(
-        "still tank: max E_K/(M g D) = {ke_max:.2e}, far-field level {:.2e} D",
+        "still tank ({label}): max E_K/(M g D) = {ke_max:.2e}, far-field level {:.2e} D",
         r.far_field_eta_over_d
     );
-    assert!(ke_max < 1e-6, "E_K/(M g D) = {ke_max}");
-    assert!(r.far_field_eta_over_d < 0.005);
     let _ = std::fs::remove_dir_all(&dir);
+    (ke_max, r.far_field_eta_over_d)
+}
+
+/// Graded rows (r = 1.5, the default) relax with a spurious flow above the 1e-6 M g D the issue allows when
+/// they start from the lattice; packed first (thesis chapter 6, the default) they stay below it (measured
+/// 1.3e-5 and 7.0e-7). Both sides are asserted.
+#[test]
+fn graded_rows_stay_at_rest_only_after_packing() {
+    let graded = TwoDtConfig {
+        coarse_ratio: 1.5,
+        packing: Some(false),
+        ..athena_cfg(Some(-0.4), Until::X(-0.2))
+    };
+    let (ke_lattice, _) = still_tank(&graded, "graded-lattice");
+    let packed = TwoDtConfig {
+        packing: None,
+        ..graded
+    };
+    let (ke_packed, far) = still_tank(&packed, "graded-packed");
+    assert!(ke_lattice > 1e-6, "lattice start: E_K/(M g D) = {ke_lattice}");
+    assert!(ke_packed < 1e-6, "packed start: E_K/(M g D) = {ke_packed}");
+    assert!(far < 0.005, "far-field level {far} D");
+}
+
+/// Regression: the packing's fixed layers sat on one global lattice, so when W or Z was not a whole number
+/// of spacings a gap of up to 1.5 dx opened at the far wall and the bottom; particles were pushed into it
+/// against the clamp and never came to rest (specific kinetic energy 1e-2 after 3 000 iterations).
+#[test]
+fn packing_converges_when_the_tank_is_not_a_whole_number_of_spacings() {
+    let cfg = TwoDtConfig {
+        packing: Some(true),
+        coarse_ratio: 1.5,
+        dx: Some(4e-3),
+        ..athena_cfg(Some(-0.4), Until::X(-0.2))
+    };
+    let scene = bowwave::twodt::scene::build(athena(), &cfg).expect("scene");
+    let frac = |v: f64| (v / cfg.dx.unwrap()).fract();
+    println!(
+        "W/dx fraction {:.3}, Z/dx fraction {:.3}",
+        frac(scene.geom.width),
+        frac(scene.geom.depth)
+    );
+    assert!(
+        frac(scene.geom.width) > 0.05 && frac(scene.geom.depth) > 0.05,
+        "the case must exercise the gap"
+    );
+    let r = scene.packing.expect("packing report");
+    println!("{r:?}");
+    assert!(r.specific_ke < 1e-6, "{r:?}");
+    assert!(r.grad_gamma_after < 0.2 * r.grad_gamma_before, "{r:?}");
 }
 
 /// Regression: particles within half a spacing of the section at t = 0 were removed, and before the stem

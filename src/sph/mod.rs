@@ -13,6 +13,7 @@ pub mod kernel;
 pub mod kernel_table;
 pub mod mls;
 pub mod neighbours;
+pub mod packing;
 pub mod particles;
 pub mod polyline_wall;
 pub mod solver;

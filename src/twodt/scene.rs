@@ -48,8 +48,9 @@ pub struct TwoDtConfig {
     pub fr: f64,
     /// Fine spacing dx_f/L; `None`: from the rule H_pj/dx > 20 (10.9), see [`auto_dx`].
     pub dx: Option<f64>,
-    /// dx_c / dx_f below the transition. Default 1 (uniform): measured in a still tank, the graded rows at
-    /// 1.5 leave E_K ≈ 1e-5 M g D of relaxation flow after settling, against 2e-7 for uniform rows (docs/twodt.md).
+    /// dx_c / dx_f below the transition. Default 1.5, with the packing: measured (docs/twodt.md), the packed
+    /// rows stay below 7e-7 M g D in the still tank, the Athena Fr 0.5 crest at x/L = 0.2 moves by +0.5 %
+    /// from the uniform rows' (1.0: 0.988 D, 1.5: 0.993, 2: 1.065 and 1.7e-5 M g D), for 42 % fewer particles.
     pub coarse_ratio: f64,
     /// W/B, default 4 (thesis §10.1.2).
     pub width_over_beam: f64,
@@ -70,7 +71,7 @@ pub struct TwoDtConfig {
     pub c0: Option<f64>,
     /// Damped settling before the ship starts, in acoustic crossings of the depth (Z/c0). Default 1: with
     /// uniform rows the still tank keeps E_K below 5e-7 M g D even with none, and 1 crossing gives 2.7e-7 for
-    /// 4 % of a run's steps (4 crossings: 2.6e-7 for 17 %); graded rows need the packing of chapter 6 instead.
+    /// 4 % of a run's steps (4 crossings: 2.6e-7 for 17 %); graded rows are packed first (`packing`).
     pub settle_crossings: f64,
     /// Free-surface detection and plunge check every this many steps. Default 10.
     pub detect_every: usize,
@@ -84,6 +85,10 @@ pub struct TwoDtConfig {
     pub kernel_table: bool,
     /// CFL of eq. (4.22); `None`: the integrator's default (RK4 2.0).
     pub cfl: Option<f64>,
+    /// Pack the initial rows (thesis chapter 6, `sph::packing`) before the run; `None` (default): pack when
+    /// the rows are graded (`coarse_ratio` > 1), whose lattice otherwise relaxes with 1e-5 M g D of spurious
+    /// flow, and not when they are uniform, a lattice already at rest (docs/twodt.md).
+    pub packing: Option<bool>,
 }
 
 impl Default for TwoDtConfig {
@@ -91,7 +96,7 @@ impl Default for TwoDtConfig {
         TwoDtConfig {
             fr: 0.5,
             dx: None,
-            coarse_ratio: 1.0,
+            coarse_ratio: 1.5,
             width_over_beam: 4.0,
             depth_over_draft: 2.0,
             fine_depth_over_draft: 0.2,
@@ -107,6 +112,7 @@ impl Default for TwoDtConfig {
             diffusion: Default::default(),
             kernel_table: true,
             cfl: None,
+            packing: None,
         }
     }
 }
@@ -169,6 +175,8 @@ pub struct Scene {
     /// Initial depth of each particle (indexed by particle id), and its row (0: the top row).
     pub initial_depth: Vec<f64>,
     pub initial_row: Vec<usize>,
+    /// What the packing did, when it ran ([`TwoDtConfig::packing`]).
+    pub packing: Option<crate::sph::packing::PackingReport>,
 }
 
 /// Factor applied to every velocity after each settling step.
@@ -305,7 +313,12 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     ));
     let mut initial_depth = vec![];
     let mut initial_row = vec![];
-    for (p, area, row) in lattice::particles(&rows, width) {
+    let mut lattice_particles = lattice::particles(&rows, width);
+    let packing = cfg
+        .packing
+        .unwrap_or(cfg.coarse_ratio > 1.0)
+        .then(|| pack_rows(&mut lattice_particles, width, depth, d1, dx_f, h));
+    for (p, area, row) in lattice_particles {
         // Particles inside the section, or closer to it than a quarter spacing, are not created. (A test at
         // half a spacing removed the whole first column along the symmetry plane whenever the row spacing
         // W/round(W/dx) fell just below dx, and the water collapsed into the gap as a jet up the plane:
@@ -328,5 +341,79 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         sim,
         initial_depth,
         initial_row,
+        packing,
     })
+}
+
+/// Fraction of the fine layer, from the calm level down, whose rows the packing holds in place. Measured on
+/// the still tank (Athena before the stem, dx/L = 2e-3, r = 1.5) and on the Athena Fr 0.5 crest at x/L = 0.2
+/// (dx/L = 1.5e-3; uniform rows: 0.988 D): holding nothing, 7.6e-7 M g D and 0.930 D; the whole fine layer,
+/// 1.0e-6 and 0.989; half of it, 7.0e-7 and 0.993; a quarter, 8.6e-7 and 1.016 (docs/twodt.md).
+pub const PACKING_HELD_FRACTION: f64 = 0.5;
+
+/// Packs the initial rows (thesis chapter 6) below the upper part of the fine layer (depth `fine_depth`,
+/// see [`PACKING_HELD_FRACTION`]) inside the rectangle [0, W] × [−Z, 0], closed by fixed particles of
+/// spacing dx_f on all four sides (the lid on top stands in for the free surface, as the thesis prescribes)
+/// and by the held rows; each particle keeps its area as its volume. The fixed layers sit at half a spacing
+/// outside each side whatever W/dx_f and Z/dx_f are: on one global lattice they left a gap of up to 1.5 dx_f
+/// at the far wall and the bottom, the particles there were pushed into it against the clamp and kept moving
+/// (specific E_K after packing 1e-2 instead of 1e-7; regression test
+/// `packing_converges_when_the_tank_is_not_a_whole_number_of_spacings`).
+fn pack_rows(
+    particles: &mut [(V2, f64, usize)],
+    width: f64,
+    depth: f64,
+    fine_depth: f64,
+    dx_f: f64,
+    h: f64,
+) -> crate::sph::packing::PackingReport {
+    let kernel = crate::sph::kernel::Kernel::<2>::new(crate::sph::kernel::KernelKind::RenormalizedGaussian, h);
+    // Layers at half a spacing outside each side, on a dx_f lattice along it, carried through the corners.
+    // (Mirror images of the initial rows across each side, which carry the local spacing, left 3e-6 M g D of
+    // spurious flow instead of 7e-7: the run's ghosts mirror the packed positions, not the initial ones.)
+    let layers = (kernel.support / dx_f).ceil() as i64 + 1;
+    let along = |len: f64| {
+        let n = (len / dx_f).round().max(1.0);
+        (0..n as i64).map(move |k| (k as f64 + 0.5) * len / n)
+    };
+    let out = |k: i64| (k as f64 + 0.5) * dx_f;
+    let mut fixed = vec![];
+    for k in 0..layers {
+        for s in along(depth) {
+            fixed.push(V2::new(-out(k), -s));
+            fixed.push(V2::new(width + out(k), -s));
+        }
+        for s in along(width) {
+            fixed.push(V2::new(s, out(k)));
+            fixed.push(V2::new(s, -depth - out(k)));
+        }
+        for k2 in 0..layers {
+            for (cx, sx) in [(0.0, -1.0), (width, 1.0)] {
+                for (cy, sy) in [(0.0, 1.0), (-depth, -1.0)] {
+                    fixed.push(V2::new(cx + sx * out(k), cy + sy * out(k2)));
+                }
+            }
+        }
+    }
+    let mut fixed_v = vec![dx_f * dx_f; fixed.len()];
+    // The rows of the upper half of the fine layer are a lattice already at rest: they are held, with the
+    // free surface they carry, and only the rows below move.
+    let moves = |p: &V2| p.y < -PACKING_HELD_FRACTION * fine_depth;
+    for (p, area, _) in particles.iter().filter(|p| !moves(&p.0)) {
+        fixed.push(*p);
+        fixed_v.push(*area);
+    }
+    let index: Vec<usize> = (0..particles.len()).filter(|&i| moves(&particles[i].0)).collect();
+    let mut pos: Vec<V2> = index.iter().map(|&i| particles[i].0).collect();
+    let vol: Vec<f64> = index.iter().map(|&i| particles[i].1).collect();
+    let m = 0.25 * dx_f;
+    let report = crate::sph::packing::pack(&kernel, &mut pos, &vol, &fixed, &fixed_v, &Default::default(), |x| {
+        x.x = x.x.clamp(m, width - m);
+        x.y = x.y.clamp(-depth + m, -m);
+    });
+    log::info!("packing: {report:?}");
+    for (i, x) in index.into_iter().zip(pos) {
+        particles[i].0 = x;
+    }
+    report
 }
