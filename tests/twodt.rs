@@ -190,3 +190,28 @@ fn first_column_along_the_symmetry_plane_is_kept() {
         assert_eq!(top, (scene.geom.width / dx).round() as usize);
     }
 }
+
+/// Regression: the settling's kinetic energy was read after the step that crosses the start time, whose
+/// later RK stages already move the section; with Wigley's full-depth stem that one step gave 1.24e-4 M g D,
+/// reported as what the settling left.
+#[test]
+fn settling_energy_is_measured_before_the_ship_starts() {
+    let hull = Arc::new(HullSurface::new(
+        &HullOffsets::read(std::path::Path::new("hulls/wigley.csv")).expect("wigley hull"),
+    ));
+    let cfg = TwoDtConfig {
+        fr: 0.5,
+        dx: Some(4e-3),
+        until: Until::X(0.005),
+        output_dx: 0.005,
+        ..Default::default()
+    };
+    let dir = std::env::temp_dir().join(format!("bowwave-settle-wigley-{}", std::process::id()));
+    let r = run(hull, &cfg, &quiet_options(&dir, false)).expect("wigley start");
+    let _ = std::fs::remove_dir_all(&dir);
+    println!(
+        "Wigley at the stem: settling left E_K/(M g D) = {:.2e}",
+        r.ke_after_settle
+    );
+    assert!(r.ke_after_settle < 1e-6, "{:.3e}", r.ke_after_settle);
+}

@@ -244,11 +244,10 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let t_start = scene.profile.t_start;
 
     // 1. Damped settling: the section stands still at x0.
-    scene.settle()?;
+    let ke_after_settle = scene.settle()? / (total_mass * g.draft);
     let ke = |sim: &crate::sph::solver::Simulation<2>| -> f64 {
         crate::sph::diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic
     };
-    let ke_after_settle = ke(&scene.sim) / (total_mass * g.draft);
     log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
 
     // 2. The passage.
