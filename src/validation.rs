@@ -264,6 +264,9 @@ pub const IMPACT_LEVEL: f64 = 0.1;
 
 /// Dam break: first-impact time at P1 within 0.1 t√(g/H) of Marrone et al. at the same resolution; mean
 /// |p − p_ref|/(ρgH) over t√(g/H) ∈ [2, 7] at P1 and P2 against Marrone and Buchner (reported).
+/// t√(g/H) at which the dam break's plunging wave closes an air cavity (thesis §8.4, text beside Fig. 8.30).
+pub const CAVITY_CLOSURE_T_STAR: f64 = 6.0;
+
 pub fn dam_break(r: &RunResult) -> Vec<Check> {
     let res = r.case.scales.length / r.dx;
     // The run refreshed the state at its last sample (the end time).
@@ -321,6 +324,19 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
             ));
         }
     }
+    // The plunging wave that falls back from the wall run-up closes an air cavity at t* = 6.0 in the thesis
+    // (§8.4, its δ-SPH run). Tolerance 0.2 (3 %), set before measuring: our front reaches the wall 3 % slower
+    // than theirs (1.89 against 1.95 √(gH)), and everything after the impact inherits that lag.
+    let t_scale = (r.case.scales.length / r.case.gravity_magnitude()).sqrt();
+    let closure = r.cavity.as_ref().map_or(f64::NAN, |c| c.time / t_scale);
+    out.push(check(
+        r,
+        "plunging wave closes its cavity, t* (thesis §8.4: 6.0), |diff|",
+        closure,
+        CAVITY_CLOSURE_T_STAR,
+        (closure - CAVITY_CLOSURE_T_STAR).abs(),
+        Some(0.2),
+    ));
     out.push(check(
         r,
         "pressure noise at end: RMS of p minus its kernel-smoothed field, /(rho g H)",
@@ -504,6 +520,9 @@ pub fn run_and_report(case: &CaseFile, out: &Path, opts: RunOptions) -> anyhow::
         "{}: {} fluid particles, dx = {:.4e} m, {} steps in {:.1} s wall ({:.3e} particle-steps/s), {} wall-penetration corrections",
         case.name, r.n_fluid, r.dx, r.steps, r.wall_seconds, r.particle_steps_per_second(), r.sim.wall_corrections
     );
+    if let Some(line) = cavity_summary(&r) {
+        println!("{line}");
+    }
     if let Some(c) = checks(&r) {
         if r.blowup.is_none() && end.is_none() {
             print_checks(&c);
@@ -518,6 +537,23 @@ pub fn run_and_report(case: &CaseFile, out: &Path, opts: RunOptions) -> anyhow::
         return Ok(2);
     }
     Ok(0)
+}
+
+/// One line on the cavity the run's cavity probe found, in the case's scales.
+pub fn cavity_summary(r: &RunResult) -> Option<String> {
+    let c = r.cavity.as_ref()?;
+    let l = r.case.scales.length;
+    let g = r.case.gravity_magnitude();
+    let t_scale = (l / g).sqrt();
+    Some(format!(
+        "cavity closed between t* = {:.3} and {:.3}: area {:.4} H², centroid ({:.3}, {:.3}) H, circulation {:.3} √(g H³) (positive clockwise)",
+        c.previous_time / t_scale,
+        c.time / t_scale,
+        c.area / (l * l),
+        c.centroid.x / l,
+        c.centroid.y / l,
+        c.circulation / (g * l.powi(3)).sqrt()
+    ))
 }
 
 /// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
@@ -551,6 +587,9 @@ pub fn validate_cli(case: Option<&str>, res: Option<f64>, out: Option<&Path>) ->
         if let Some(dir) = out {
             r.series.write(&dir.join(format!("{n}_series.csv")))?;
             plots(&r, dir)?;
+        }
+        if let Some(line) = cavity_summary(&r) {
+            eprintln!("{n}: {line}");
         }
         let c = checks(&r).unwrap_or_default();
         ok &= c.iter().all(|c| c.pass());

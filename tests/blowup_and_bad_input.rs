@@ -113,6 +113,10 @@ fn bad_case_files_name_the_file_and_field() {
             good.replace("direction = [1.0, 0.0]", "direction = [2.0, 0.0]"),
             "probes.pressure[0]",
         ),
+        (
+            good.replace("[output]", "[probes.cavity]\nafter = -1.0\n\n[output]"),
+            "probes.cavity.after",
+        ),
     ];
     for (text, needle) in cases {
         let e = err_of(&text);

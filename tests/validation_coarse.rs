@@ -97,3 +97,21 @@ fn dam_break_energy_loss_before_impact_decreases_with_resolution() {
     assert!(l20 > 0.0 && l40 > 0.0, "energy must be dissipated, not created");
     assert!(l40 < l20, "loss does not decrease with resolution: {l20} -> {l40}");
 }
+
+/// The plunge detection on a simulated breaker: the wave that falls back from the dam-break run-up closes an
+/// air cavity at t√(g/H) = 6.0 in the thesis (§8.4); the cavity probe (the 2D+t plunge definitions) must
+/// find it within 0.2 (the tolerance of `bowwave validate`), overturning towards −x, so with a
+/// counter-clockwise (negative) circulation. Measured: t* = 6.067 (H/dx 20), 6.047 (40).
+#[test]
+fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
+    let end = 6.5 * (0.6f64 / 9.81).sqrt();
+    let r = run_case("dam-break", 20.0, Some(end));
+    let c = r.cavity.as_ref().expect("no cavity closed by t* = 6.5");
+    let t_star = c.time / (0.6f64 / 9.81).sqrt();
+    println!("{}", validation::cavity_summary(&r).unwrap());
+    assert!(
+        (t_star - validation::CAVITY_CLOSURE_T_STAR).abs() <= 0.2,
+        "closure at t* = {t_star}"
+    );
+    assert!(c.circulation < 0.0, "circulation {}", c.circulation);
+}

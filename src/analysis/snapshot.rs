@@ -25,6 +25,24 @@ pub struct Snapshot {
 }
 
 impl Snapshot {
+    /// The fluid of a simulation now, with its free surface detected (7.21–7.24, thresholds 0.20/0.75);
+    /// `dx` is the finest particle spacing. Refreshes the simulation's derived fields first.
+    pub fn from_simulation(sim: &mut crate::sph::solver::Simulation<2>, dx: f64) -> Self {
+        sim.refresh();
+        let fs = sim.free_surface(crate::sph::free_surface::Thresholds::default());
+        let f = &sim.fluid;
+        Snapshot {
+            pos: f.pos.clone(),
+            vel: f.vel.clone(),
+            vol: f.mass.iter().zip(&f.rho).map(|(m, r)| m / r).collect(),
+            on_surface: fs.on_surface,
+            normal: fs.normal,
+            lambda: fs.lambda,
+            h: sim.kernel.h,
+            dx,
+        }
+    }
+
     /// Cell list over the positions with the given cell size.
     pub fn cells(&self, cell: f64) -> CellList<2> {
         CellList::build(&self.pos, cell)

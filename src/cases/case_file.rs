@@ -212,6 +212,17 @@ pub struct Probes {
     /// Record the front (largest x of the fluid).
     #[serde(default)]
     pub front: bool,
+    /// Watch for the first air cavity closed by a plunging jet (`cases::cavity_probe`).
+    #[serde(default)]
+    pub cavity: Option<CavityProbeSpec>,
+}
+
+/// The cavity probe: from time `after` (s) on, the fluid is checked at every series sample for a newly
+/// closed air cavity; the run records the first one.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CavityProbeSpec {
+    pub after: f64,
 }
 
 /// A pressure sensor on a wall: the average of the pressure over a segment of length `size` (m) centred at
@@ -431,6 +442,11 @@ impl CaseFile {
                     &format!("probes.pressure[{k}].size"),
                     "a non-negative sensor size (m)",
                 ));
+            }
+        }
+        if let Some(c) = &self.probes.cavity {
+            if !(c.after.is_finite() && c.after >= 0.0) {
+                return Err(err("probes.cavity.after", "a non-negative time in seconds"));
             }
         }
         if !pos(self.output.end_time) {

@@ -3,6 +3,7 @@
 
 pub mod builtin;
 pub mod case_file;
+pub mod cavity_probe;
 pub mod run;
 pub mod setup;
 

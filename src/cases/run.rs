@@ -40,6 +40,8 @@ pub struct RunResult {
     pub wall_seconds: f64,
     pub files: Vec<PathBuf>,
     pub sim: Simulation<2>,
+    /// The first cavity closure, when the case has a cavity probe and one closed.
+    pub cavity: Option<super::cavity_probe::CavityClosure>,
 }
 
 impl RunResult {
@@ -229,6 +231,13 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     };
     // Walls that move do work on the fluid, so energy may rise; every body force here is conservative.
     let check_energy = !opts.allow_energy_growth && case.walls.iter().all(|w| w.velocity.is_none());
+    let wall_lines: Vec<Vec<nalgebra::Vector2<f64>>> = case
+        .walls
+        .iter()
+        .map(|w| w.points.iter().map(|p| nalgebra::Vector2::new(p[0], p[1])).collect())
+        .collect();
+    let mut cavity_watch = super::cavity_probe::CavityWatch::default();
+    let mut cavity = None;
     let start = Instant::now();
     let mut blowup = None;
     while sim.time < end - 1e-12 {
@@ -243,6 +252,11 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
             let row = sample(case, &mut sim, &sampler);
             let gain = row[DE_COLUMN];
             series.push(row);
+            if let Some(spec) = &case.probes.cavity {
+                if cavity.is_none() && sim.time >= spec.after {
+                    cavity = cavity_watch.check(&mut sim, dx, &wall_lines);
+                }
+            }
             if check_energy && gain > ENERGY_GROWTH_LIMIT {
                 blowup = Some(BlowUp {
                     reason: BlowUpReason::EnergyGrowth {
@@ -298,5 +312,6 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
         wall_seconds,
         files,
         sim,
+        cavity,
     })
 }

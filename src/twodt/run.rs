@@ -6,7 +6,6 @@ use super::scene::{build, Scene, TwoDtConfig, Until};
 use crate::analysis::{cavity, jet, level_set, Snapshot};
 use crate::geometry::surface::HullSurface;
 use crate::io::{atomic::write_atomic, csv_table::Table, plot, vtk};
-use crate::sph::free_surface::Thresholds;
 use crate::sph::polyline_wall::nearest_point;
 use nalgebra::Vector2;
 use std::path::{Path, PathBuf};
@@ -106,20 +105,7 @@ pub struct TwoDtResult {
 }
 
 fn snapshot(scene: &mut Scene) -> Snapshot {
-    let sim = &mut scene.sim;
-    sim.refresh();
-    let fs = sim.free_surface(Thresholds::default());
-    let f = &sim.fluid;
-    Snapshot {
-        pos: f.pos.clone(),
-        vel: f.vel.clone(),
-        vol: f.mass.iter().zip(&f.rho).map(|(m, r)| m / r).collect(),
-        on_surface: fs.on_surface,
-        normal: fs.normal,
-        lambda: fs.lambda,
-        h: sim.kernel.h,
-        dx: scene.geom.dx_f,
-    }
+    Snapshot::from_simulation(&mut scene.sim, scene.geom.dx_f)
 }
 
 /// A cavity counts as a plunge only if its lowest point is below this fraction of the crest height.
