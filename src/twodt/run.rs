@@ -108,7 +108,8 @@ fn snapshot(scene: &mut Scene) -> Snapshot {
     Snapshot::from_simulation(&mut scene.sim, scene.geom.dx_f)
 }
 
-/// A cavity counts as a plunge only if its lowest point is below this fraction of the crest height.
+/// A cavity counts as a plunge only if its lowest point is below this fraction of the crest height: the
+/// default of [`TwoDtConfig::plunge_depth`](super::scene::TwoDtConfig::plunge_depth).
 pub const PLUNGE_CAVITY_DEPTH: f64 = 0.5;
 
 /// The level set of the previous check with its atmosphere mask.
@@ -124,6 +125,7 @@ fn plunge_check(
     scene: &Scene,
     s: &Snapshot,
     t: f64,
+    plunge_depth: f64,
     previous: &mut PreviousAir,
 ) -> Option<(PlungeMetrics, cavity::Cavity)> {
     let g = &scene.geom;
@@ -156,7 +158,7 @@ fn plunge_check(
     // into the lower part of the wave. Loops folded within a thin sheet high on the crest are not plunges.
     let (c, crest) = cavities.into_iter().find_map(|c| {
         let crest = crest_of(&c);
-        (c.lo.y < PLUNGE_CAVITY_DEPTH * crest && was_open(&c)).then_some((c, crest))
+        (c.lo.y < plunge_depth * crest && was_open(&c)).then_some((c, crest))
     })?;
     let u = g.fr;
     let idx = jet::jet_particles(s, &ls, &c);
@@ -303,7 +305,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                 // The mean level of the far field (the top particles jitter by a tenth of a spacing).
                 let far = (mean_finite(&eta[far_from..]) - far_ref).abs();
                 far_eta = far_eta.max(far / g.draft);
-                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, &mut previous_air) {
+                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, cfg.plunge_depth, &mut previous_air) {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;
