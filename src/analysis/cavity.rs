@@ -140,6 +140,35 @@ pub fn is_atmosphere(ls: &LevelSet, mask: &[bool], p: &V2) -> bool {
     mask[j as usize * ls.ny + i as usize]
 }
 
+/// A plunge traps air that was open to the atmosphere at the previous check: at least this fraction of a
+/// new cavity's nodes must have been atmosphere then. Holes that open inside a stretched sheet of particles
+/// were fluid before and are not plunges.
+pub const TRAPPED_FRACTION: f64 = 0.5;
+
+/// Follows the air of a flow from check to check and reports the cavities that have just closed: those of
+/// the current level set (area ≥ `min_area`, nodes accepted by `keep`) of which at least
+/// [`TRAPPED_FRACTION`] was atmosphere at the previous check.
+#[derive(Default)]
+pub struct ClosureWatch {
+    previous: Option<(LevelSet, Vec<bool>)>,
+}
+
+impl ClosureWatch {
+    /// The cavities closed since the previous call, in [`find_cavities`] order; `None` on the first call,
+    /// which has nothing to compare with.
+    pub fn newly_closed(&mut self, ls: &LevelSet, min_area: f64, keep: impl Fn(&[V2]) -> bool) -> Option<Vec<Cavity>> {
+        let atmosphere = atmosphere_mask(ls);
+        let cavities = find_cavities(ls, &atmosphere, min_area, keep);
+        let (pls, pmask) = self.previous.replace((ls.clone(), atmosphere))?;
+        Some(
+            cavities
+                .into_iter()
+                .filter(|c| trapped_fraction(ls, c, &pls, &pmask) >= TRAPPED_FRACTION)
+                .collect(),
+        )
+    }
+}
+
 /// Share of the cavity's nodes that were atmosphere in an earlier level set (`earlier`, with its mask from
 /// [`atmosphere_mask`]). A plunge traps air that was open; a hole that opens inside the fluid was not.
 pub fn trapped_fraction(ls: &LevelSet, cavity: &Cavity, earlier: &LevelSet, earlier_mask: &[bool]) -> f64 {

@@ -5,15 +5,11 @@
 //! that holes opening inside a stretched sheet are not taken for a closure). The dam break's plunging wave
 //! closes one at t√(g/H) = 6.0 in the thesis (§8.4), which validates the detection on a simulated flow.
 
-use crate::analysis::cavity::{self, Cavity};
-use crate::analysis::level_set::{self, LevelSet};
+use crate::analysis::cavity;
+use crate::analysis::level_set;
 use crate::analysis::snapshot::{Snapshot, V2};
 use crate::sph::polyline_wall::nearest_point;
 use crate::sph::solver::Simulation;
-
-/// Fraction of a new cavity's nodes that must have been atmosphere at the previous check (as the 2D+t
-/// plunge detection, `twodt::run::TRAPPED_FRACTION`).
-pub const TRAPPED_FRACTION: f64 = 0.5;
 
 /// A cavity closure found by the probe.
 #[derive(Clone, Debug)]
@@ -31,7 +27,8 @@ pub struct CavityClosure {
 /// The state of the watch between checks.
 #[derive(Default)]
 pub struct CavityWatch {
-    previous: Option<(f64, LevelSet, Vec<bool>)>,
+    closures: cavity::ClosureWatch,
+    previous_time: f64,
 }
 
 impl CavityWatch {
@@ -40,11 +37,7 @@ impl CavityWatch {
     pub fn check(&mut self, sim: &mut Simulation<2>, dx: f64, walls: &[Vec<V2>]) -> Option<CavityClosure> {
         let s = Snapshot::from_simulation(sim, dx);
         let h = s.h;
-        let (mut lo, mut hi) = (V2::repeat(f64::INFINITY), V2::repeat(f64::NEG_INFINITY));
-        for p in &s.pos {
-            lo = lo.inf(p);
-            hi = hi.sup(p);
-        }
+        let (lo, hi) = bounding_box(s.pos.iter())?;
         let pad = V2::repeat(3.0 * h);
         let (mut lo, mut hi) = (lo - pad, hi + pad);
         // Inside the walls' bounding box, but always above the highest particle (the top row of the grid is
@@ -60,16 +53,15 @@ impl CavityWatch {
                 .iter()
                 .all(|p| walls.iter().all(|w| (nearest_point(w, p) - p).norm() > margin))
         };
-        let atmosphere = cavity::atmosphere_mask(&ls);
-        let cavities = cavity::find_cavities(&ls, &atmosphere, (2.0 * h).powi(2), away);
-        let previous = self.previous.replace((sim.time, ls.clone(), atmosphere));
-        let (t_prev, pls, pmask) = previous?;
-        let c: Cavity = cavities
+        let previous_time = std::mem::replace(&mut self.previous_time, sim.time);
+        let c = self
+            .closures
+            .newly_closed(&ls, (2.0 * h).powi(2), away)?
             .into_iter()
-            .find(|c| cavity::trapped_fraction(&ls, c, &pls, &pmask) >= TRAPPED_FRACTION)?;
+            .next()?;
         Some(CavityClosure {
             time: sim.time,
-            previous_time: t_prev,
+            previous_time,
             area: c.area,
             centroid: c.centroid,
             circulation: cavity::circulation(&s, &ls, &c),

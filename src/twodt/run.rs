@@ -112,21 +112,13 @@ fn snapshot(scene: &mut Scene) -> Snapshot {
 /// default of [`TwoDtConfig::plunge_depth`](super::scene::TwoDtConfig::plunge_depth).
 pub const PLUNGE_CAVITY_DEPTH: f64 = 0.5;
 
-/// The level set of the previous check with its atmosphere mask.
-type PreviousAir = Option<(level_set::LevelSet, Vec<bool>)>;
-
-/// A plunge traps air that was open to the atmosphere at the previous check: at least this fraction of the
-/// cavity's nodes must have been atmosphere then. Holes that open inside a stretched sheet of particles
-/// were fluid before and are not plunges.
-pub const TRAPPED_FRACTION: f64 = 0.5;
-
 /// Looks for a closed air cavity at the bow wave; returns the metrics and the cavity if the wave has plunged.
 fn plunge_check(
     scene: &Scene,
     s: &Snapshot,
     t: f64,
     plunge_depth: f64,
-    previous: &mut PreviousAir,
+    watch: &mut cavity::ClosureWatch,
 ) -> Option<(PlungeMetrics, cavity::Cavity)> {
     let g = &scene.geom;
     let h = s.h;
@@ -141,10 +133,7 @@ fn plunge_check(
             (nearest_point(&walls, p) - p).norm() > margin && p.x < g.width - margin && p.y > -g.depth + margin
         })
     };
-    let atmosphere = cavity::atmosphere_mask(&ls);
-    let cavities = cavity::find_cavities(&ls, &atmosphere, (2.0 * h).powi(2), keep);
-    let (pls, pmask) = previous.replace((ls.clone(), atmosphere))?;
-    let was_open = |c: &cavity::Cavity| cavity::trapped_fraction(&ls, c, &pls, &pmask) >= TRAPPED_FRACTION;
+    let closed = watch.newly_closed(&ls, (2.0 * h).powi(2), keep)?;
     // Crest: the highest free-surface particle over the cavity or up to one cavity width before it.
     let crest_of = |c: &cavity::Cavity| {
         let y_from = c.lo.x - (c.hi.x - c.lo.x);
@@ -156,9 +145,9 @@ fn plunge_check(
     };
     // A plunge closes the cavity against the free surface in front of the wave: the cavity reaches down
     // into the lower part of the wave. Loops folded within a thin sheet high on the crest are not plunges.
-    let (c, crest) = cavities.into_iter().find_map(|c| {
+    let (c, crest) = closed.into_iter().find_map(|c| {
         let crest = crest_of(&c);
-        (c.lo.y < plunge_depth * crest && was_open(&c)).then_some((c, crest))
+        (c.lo.y < plunge_depth * crest).then_some((c, crest))
     })?;
     let u = g.fr;
     let idx = jet::jet_particles(s, &ls, &c);
@@ -277,7 +266,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let mut far_eta = 0.0f64;
     let mut max_mach = 0.0f64;
     let mut plunge: Option<PlungeMetrics> = None;
-    let mut previous_air: PreviousAir = None;
+    let mut closure_watch = cavity::ClosureWatch::default();
     let mut x_stop = match cfg.until {
         Until::Plunge | Until::Transom => hull.x_range.1.min(g.x_end),
         Until::X(x) => x,
@@ -305,7 +294,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                 // The mean level of the far field (the top particles jitter by a tenth of a spacing).
                 let far = (mean_finite(&eta[far_from..]) - far_ref).abs();
                 far_eta = far_eta.max(far / g.draft);
-                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, cfg.plunge_depth, &mut previous_air) {
+                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, cfg.plunge_depth, &mut closure_watch) {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;
