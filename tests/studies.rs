@@ -127,3 +127,25 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
     };
     assert!(runner::collect_finished(&changed, &out).is_empty());
 }
+
+/// Regression: after the packing became the default (r = 1.5), `study --dry-run` built and packed every scene,
+/// which at the published Athena resolutions ran for over 20 minutes before printing anything. The dry run now
+/// builds unpacked scenes; the packing never changes the particle count, so the estimate is the same.
+#[test]
+fn dry_run_does_not_pack_the_scenes() {
+    let dir = std::env::temp_dir().join("bowwave-study-dry-run");
+    let path = write_study(
+        &dir,
+        "dry",
+        "froude = [0.5]\n[resolution]\ndx = [4e-3]\n[model]\nratio = 1.5\n",
+    );
+    let study = Study::read(&path).unwrap();
+    let spec = &study.cases[0];
+    assert_eq!(runner::dry_run_config(spec).packing, Some(false));
+    let est = runner::dry_run(&study).unwrap();
+    let hull = bowwave::geometry::hull_file::HullOffsets::read(&study.hull_path).unwrap();
+    let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&hull));
+    let packed = bowwave::twodt::scene::build(surface, &spec.config()).unwrap();
+    assert!(packed.packing.is_some(), "the case itself packs (r = 1.5)");
+    assert_eq!(est[0].particles, packed.sim.n_fluid());
+}

@@ -65,14 +65,16 @@ pub struct Estimate {
 
 /// Builds each case's scene (no time step) to count its particles and estimate its steps (from the
 /// acoustic time-step limit at c0 with a 10 % margin for the flow speed) and its run time at
-/// [`REFERENCE_THROUGHPUT`]. A plunge search is estimated to its give-up point, the worst case.
+/// [`REFERENCE_THROUGHPUT`]. A plunge search is estimated to its give-up point, the worst case. The scenes are
+/// built unpacked: the packing moves particles but never adds or removes one, and at the published
+/// resolutions it would cost minutes per case (regression test `dry_run_does_not_pack_the_scenes`).
 pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
     let hull = surface(study)?;
     study
         .cases
         .iter()
         .map(|spec| {
-            let scene = crate::twodt::scene::build(hull.clone(), &spec.config())?;
+            let scene = crate::twodt::scene::build(hull.clone(), &dry_run_config(spec))?;
             let g = &scene.geom;
             let h = scene.sim.kernel.h;
             let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * g.c0, 1.0);
@@ -87,6 +89,14 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
             })
         })
         .collect()
+}
+
+/// The configuration a dry run builds its scene from: the case's, without the packing.
+pub fn dry_run_config(spec: &CaseSpec) -> crate::twodt::scene::TwoDtConfig {
+    crate::twodt::scene::TwoDtConfig {
+        packing: Some(false),
+        ..spec.config()
+    }
 }
 
 fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {
