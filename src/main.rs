@@ -126,6 +126,17 @@ enum Command {
         /// Write a PNG of the bow region at every output.
         #[arg(long)]
         frames: bool,
+        /// Minutes of wall time between checkpoints (OUT/checkpoint.bin: the particles and the run's state;
+        /// 0: none). A run started again with the same options goes on from its checkpoint, to the same bits.
+        #[arg(long, default_value_t = 10.0)]
+        checkpoint_every: f64,
+        /// Stop after this many minutes of wall time, saving a checkpoint (a batch job's time limit); run
+        /// the same command again to go on.
+        #[arg(long)]
+        wall_limit: Option<f64>,
+        /// Ignore a checkpoint in the output folder and start from the beginning.
+        #[arg(long)]
+        fresh: bool,
         /// No progress bar.
         #[arg(long, short)]
         quiet: bool,
@@ -190,6 +201,15 @@ enum Command {
         /// Print each case's particle count, estimated steps and run time, and run nothing.
         #[arg(long)]
         dry_run: bool,
+        /// Minutes of wall time between checkpoints of the running case (CASE/checkpoint.bin; 0: none): an
+        /// interrupted study loses at most this much of the case in progress, and goes on from it when run
+        /// again (to the same bits). `--force` ignores checkpoints too.
+        #[arg(long, default_value_t = 10.0)]
+        checkpoint_every: f64,
+        /// Stop the case in progress after this many minutes of wall time, saving a checkpoint (a batch job's
+        /// time limit); run the same command again to go on.
+        #[arg(long)]
+        wall_limit: Option<f64>,
         /// Cases run at the same time, each with threads/jobs worker threads (default 1: every thread inside
         /// one case, measured faster on 2 cores, see docs/studies.md).
         #[arg(long, default_value_t = 1)]
@@ -569,6 +589,8 @@ fn run() -> anyhow::Result<()> {
             collect,
             force,
             dry_run,
+            checkpoint_every,
+            wall_limit,
             jobs,
             quiet,
         } => {
@@ -606,6 +628,8 @@ fn run() -> anyhow::Result<()> {
                     jobs,
                     threads: rayon::current_num_threads(),
                     progress: !quiet,
+                    checkpoint_every: minutes("--checkpoint-every", checkpoint_every)?,
+                    wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
                 };
                 let ran = studies::runner::run_cases(&study, &opts)?;
                 println!("{ran} case(s) run");
@@ -649,6 +673,9 @@ fn run() -> anyhow::Result<()> {
             quiet,
             x0,
             settle,
+            checkpoint_every,
+            wall_limit,
+            fresh,
         } => {
             let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
             let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
@@ -693,8 +720,24 @@ fn run() -> anyhow::Result<()> {
                 frames,
                 multi: None,
                 label: String::new(),
+                checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
+                    every: minutes("--checkpoint-every", checkpoint_every)?,
+                    resume: !fresh,
+                    wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
+                    halt_at_step: None,
+                },
             };
-            let r = bowwave::twodt::run::run(surface, &cfg, &opts)?;
+            let r = match bowwave::twodt::run::run(surface, &cfg, &opts) {
+                Ok(r) => r,
+                Err(e) => match e.downcast_ref::<bowwave::twodt::checkpoint::Halted>() {
+                    // Not a failure: the state is saved; exit status 3 tells a batch script to submit again.
+                    Some(h) => {
+                        eprintln!("{h}");
+                        std::process::exit(3);
+                    }
+                    None => return Err(e),
+                },
+            };
             bowwave::twodt::report::print(&r, &out);
             if r.blowup.is_some() {
                 std::process::exit(2);
@@ -842,4 +885,12 @@ fn run() -> anyhow::Result<()> {
         },
     }
     Ok(())
+}
+
+/// A duration given in minutes on the command line: `None` for 0; an error naming the option otherwise.
+fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> {
+    if !(m.is_finite() && m >= 0.0) {
+        anyhow::bail!("{option} {m}: expected a number of minutes, 0 or more");
+    }
+    Ok((m > 0.0).then(|| std::time::Duration::from_secs_f64(60.0 * m)))
 }

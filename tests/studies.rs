@@ -81,6 +81,8 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
         jobs: 1,
         threads: 1,
         progress: false,
+        checkpoint_every: None,
+        wall_limit: None,
     };
     assert_eq!(
         runner::run_cases(&study, &opts).unwrap(),

@@ -148,12 +148,22 @@ pub const TRAPPED_FRACTION: f64 = 0.5;
 /// Follows the air of a flow from check to check and reports the cavities that have just closed: those of
 /// the current level set (area ≥ `min_area`, nodes accepted by `keep`) of which at least
 /// [`TRAPPED_FRACTION`] was atmosphere at the previous check.
-#[derive(Default)]
+#[derive(Clone, Debug, Default)]
 pub struct ClosureWatch {
     previous: Option<(LevelSet, Vec<bool>)>,
 }
 
 impl ClosureWatch {
+    /// A watch that resumes from a saved previous check (level set and its atmosphere mask).
+    pub fn resume(previous: Option<(LevelSet, Vec<bool>)>) -> Self {
+        ClosureWatch { previous }
+    }
+
+    /// The previous check, for saving the watch (checkpoints).
+    pub fn previous(&self) -> Option<&(LevelSet, Vec<bool>)> {
+        self.previous.as_ref()
+    }
+
     /// The cavities closed since the previous call, in [`find_cavities`] order; `None` on the first call,
     /// which has nothing to compare with.
     pub fn newly_closed(&mut self, ls: &LevelSet, min_area: f64, keep: impl Fn(&[V2]) -> bool) -> Option<Vec<Cavity>> {

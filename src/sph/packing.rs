@@ -36,14 +36,14 @@ impl Default for PackingConfig {
         Self {
             alpha_zeta: 5e-3,
             cfl: 1.0,
-            max_iterations: std::env::var("PI").map(|v| v.parse().unwrap()).unwrap_or(3_000),
+            max_iterations: 3_000,
             ke_tolerance: 1e-8,
         }
     }
 }
 
 /// What the packing did.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, serde::Serialize, serde::Deserialize)]
 pub struct PackingReport {
     pub iterations: usize,
     /// Specific kinetic energy Σ|u|²/(N β) at the end.

@@ -28,6 +28,10 @@ pub struct StudyOptions {
     /// Worker threads in all.
     pub threads: usize,
     pub progress: bool,
+    /// Wall time between checkpoints of a running case; `None`: none.
+    pub checkpoint_every: Option<std::time::Duration>,
+    /// Stop the running case after this much wall time, with a checkpoint.
+    pub wall_limit: Option<std::time::Duration>,
 }
 
 /// A finished case as recorded in its folder (`case.json`).
@@ -267,6 +271,12 @@ fn run_one(
         frames: spec.frames,
         multi: Some(multi.clone()),
         label: format!("{} Fr {:.3} ", study.spec.name, spec.fr),
+        checkpoint: crate::twodt::checkpoint::CheckpointPolicy {
+            every: opts.checkpoint_every,
+            resume: !opts.force,
+            wall_limit: opts.wall_limit,
+            halt_at_step: None,
+        },
     };
     let result = run(hull.clone(), &spec.config(), &topts)?;
     let rec = CaseRecord {

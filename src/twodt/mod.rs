@@ -1,6 +1,7 @@
 //! The 2D+t bow-wave simulation (thesis §10.1): a hull section crossing an Earth-fixed plane at x = U t + x0
 //! is a deforming wall in the δ-SPH solver. Orchestrates geometry, solver and analysis.
 
+pub mod checkpoint;
 pub mod lattice;
 pub mod profile;
 

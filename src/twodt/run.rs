@@ -2,6 +2,7 @@
 //! detection and the jet metrics, outputs (metrics row as CSV and JSON, series, η(y, x) table, plunge
 //! snapshots, VTK).
 
+use super::checkpoint;
 use super::scene::{build, Scene, TwoDtConfig, Until};
 use crate::analysis::{cavity, jet, level_set, Snapshot};
 use crate::geometry::surface::HullSurface;
@@ -27,6 +28,8 @@ pub struct TwoDtOptions {
     pub multi: Option<indicatif::MultiProgress>,
     /// Label in front of the progress bar.
     pub label: String,
+    /// Checkpoints: when to save, whether to resume, when to stop.
+    pub checkpoint: checkpoint::CheckpointPolicy,
 }
 
 impl TwoDtOptions {
@@ -40,6 +43,7 @@ impl TwoDtOptions {
             frames: false,
             multi: None,
             label: String::new(),
+            checkpoint: Default::default(),
         }
     }
 }
@@ -208,24 +212,25 @@ fn mean_finite(v: &[f64]) -> f64 {
     sum / n.max(1) as f64
 }
 
-/// Runs a case and writes its outputs into `opts.out_dir`.
+/// Runs a case and writes its outputs into `opts.out_dir`. With `opts.checkpoint.resume` and a checkpoint of
+/// the same configuration in that folder, goes on from it (`twodt::checkpoint`); a run that ends removes its
+/// checkpoint. A run stopped on purpose returns the error [`Halted`](super::checkpoint::Halted).
 pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> anyhow::Result<TwoDtResult> {
     let clock = Instant::now();
     let cpu0 = crate::bench::cpu_seconds();
-    let mut scene = build(hull.clone(), cfg)?;
-    let g = scene.geom.clone();
-    let n = scene.sim.n_fluid();
     std::fs::create_dir_all(&opts.out_dir)
         .map_err(|e| anyhow::anyhow!("cannot create output directory {}: {e}", opts.out_dir.display()))?;
-    let total_mass: f64 = scene.sim.fluid.mass.iter().sum();
+    let ckpt_path = opts.out_dir.join(checkpoint::FILE);
+    let (mut scene, mut p, fingerprint) = match resume(&hull, cfg, opts, &ckpt_path)? {
+        Some(resumed) => resumed,
+        None => start(&hull, cfg)?,
+    };
+    let g = scene.geom.clone();
+    let n = scene.sim.n_fluid();
     let t_start = scene.profile.t_start;
-
-    // 1. Damped settling: the section stands still at x0.
-    let ke_after_settle = scene.settle()? / (total_mass * g.draft);
     let ke = |sim: &crate::sph::solver::Simulation<2>| -> f64 {
         crate::sph::diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic
     };
-    log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
 
     // 2. The passage.
     let bar = opts.progress.then(|| {
@@ -243,92 +248,84 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         );
         b
     });
-    let mut series = Table::new(
-        [
-            "x_over_l",
-            "t",
-            "steps",
-            "ke_over_mgd",
-            "max_mach",
-            "far_eta_over_d",
-            "surface_particles",
-            "wall_corrections",
-        ]
-        .iter()
-        .map(|s| s.to_string())
-        .collect(),
-    );
-    let mut eta_table = Table::new(vec!["x_over_l".into(), "y_over_l".into(), "eta_over_d".into()]);
     let bin = 4.0 * g.dx_f;
-    let eta0 = eta_profile(&scene.sim.fluid.pos, g.width, bin, g.dx_f);
     let far_from = (0.75 * g.width / bin) as usize;
-    let far_ref = mean_finite(&eta0[far_from..]);
-    let mut far_eta = 0.0f64;
-    let mut max_mach = 0.0f64;
-    let mut plunge: Option<PlungeMetrics> = None;
-    let mut closure_watch = cavity::ClosureWatch::default();
-    let mut x_stop = match cfg.until {
-        Until::Plunge | Until::Transom => hull.x_range.1.min(g.x_end),
-        Until::X(x) => x,
-    };
-    let mut next_output = g.x0;
-    let mut vtk_frames: Vec<(f64, String)> = vec![];
     let mut blowup = None;
-    let mut bow = None;
-    let mut crest = f64::NAN;
-    let steps0 = scene.sim.steps;
+    let mut last_save = Instant::now();
+    let policy = &opts.checkpoint;
     loop {
         let x = scene.profile.x_at(scene.sim.time);
-        let detect = (scene.sim.steps - steps0) % cfg.detect_every.max(1) as u64 == 0;
-        let output = x >= next_output;
-        if detect || output || x >= x_stop {
+        // Checkpoints are taken here, at the top of an iteration, where a resumed run re-enters the loop.
+        let halt =
+            policy.halt_at_step == Some(scene.sim.steps) || policy.wall_limit.is_some_and(|w| clock.elapsed() >= w);
+        if halt || policy.every.is_some_and(|e| last_save.elapsed() >= e) {
+            let wall = p.wall_before + clock.elapsed().as_secs_f64();
+            let cpu = p.cpu_before + crate::bench::cpu_seconds() - cpu0;
+            checkpoint::save(&ckpt_path, &fingerprint, &scene, &p, wall, cpu)?;
+            last_save = Instant::now();
+            if halt {
+                if let Some(b) = &bar {
+                    b.finish_and_clear();
+                }
+                return Err(checkpoint::Halted {
+                    x,
+                    steps: scene.sim.steps,
+                    checkpoint: ckpt_path,
+                }
+                .into());
+            }
+        }
+        let detect = (scene.sim.steps - p.steps0) % cfg.detect_every.max(1) as u64 == 0;
+        let output = x >= p.next_output;
+        if detect || output || x >= p.x_stop {
             let s = snapshot(&mut scene);
             let umax = s.vel.iter().map(|v| v.norm()).fold(0.0, f64::max);
             let mach = umax / g.c0;
-            if mach > 0.1 && max_mach <= 0.1 {
+            if mach > 0.1 && p.max_mach <= 0.1 {
                 log::warn!("Mach number {mach:.3} above 0.1 at x/L = {x:.4}: raise c0 (--c0)");
             }
-            max_mach = max_mach.max(mach);
+            p.max_mach = p.max_mach.max(mach);
             let eta = eta_profile(&s.pos, g.width, bin, g.dx_f);
-            if plunge.is_none() {
+            if p.plunge.is_none() {
                 // The mean level of the far field (the top particles jitter by a tenth of a spacing).
-                let far = (mean_finite(&eta[far_from..]) - far_ref).abs();
-                far_eta = far_eta.max(far / g.draft);
-                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, cfg.plunge_depth, &mut closure_watch) {
+                let far = (mean_finite(&eta[far_from..]) - p.far_ref).abs();
+                p.far_eta = p.far_eta.max(far / g.draft);
+                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, cfg.plunge_depth, &mut p.closure_watch)
+                {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;
                     }
-                    bow = Some(bow_tables(&scene, &s));
+                    p.bow = Some(bow_tables(&scene, &s));
                     if cfg.until == Until::Plunge {
-                        x_stop = x_stop.min(pm.x_plunge_over_l + cfg.after_plunge);
+                        p.x_stop = p.x_stop.min(pm.x_plunge_over_l + cfg.after_plunge);
                     }
-                    plunge = Some(pm);
+                    p.plunge = Some(pm);
                 }
             }
-            if output || x >= x_stop {
-                next_output += cfg.output_dx;
-                series.push(vec![
+            if output || x >= p.x_stop {
+                p.next_output += cfg.output_dx;
+                p.series.push(vec![
                     x,
                     scene.sim.time - t_start,
                     scene.sim.steps as f64,
-                    ke(&scene.sim) / (total_mass * g.draft),
+                    ke(&scene.sim) / (p.total_mass * g.draft),
                     mach,
-                    far_eta,
+                    p.far_eta,
                     s.on_surface.iter().filter(|b| **b).count() as f64,
                     scene.sim.wall_corrections as f64,
                 ]);
                 let y_wl = waterline_half_breadth(&scene.profile.at(scene.sim.time).points);
-                crest = f64::NEG_INFINITY;
+                p.crest = f64::NEG_INFINITY;
                 for (k, z) in eta.iter().enumerate() {
                     // Bins inside the hull's waterline would show the water under the hull, not a free surface.
                     if z.is_finite() && (k as f64 + 0.5) * bin > y_wl {
-                        eta_table.push(vec![x, (k as f64 + 0.5) * bin, z / g.draft]);
-                        crest = crest.max(z / g.draft);
+                        p.eta_table.push(vec![x, (k as f64 + 0.5) * bin, z / g.draft]);
+                        p.crest = p.crest.max(z / g.draft);
                     }
                 }
                 if opts.frames {
-                    let path = opts.out_dir.join(format!("frame_{:04}.png", series.rows.len()));
+                    let path = opts.out_dir.join(format!("frame_{:04}.png", p.series.rows.len()));
                     depth_plot(
                         &scene,
                         &s,
@@ -338,17 +335,17 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                     )?;
                 }
                 if opts.vtk {
-                    let name = format!("frame_{:05}.vtp", vtk_frames.len());
+                    let name = format!("frame_{:05}.vtp", p.vtk_frames.len());
                     write_frame(&scene, &s, &opts.out_dir.join(&name))?;
-                    vtk_frames.push((x, name));
+                    p.vtk_frames.push((x, name));
                 }
             }
             if let Some(b) = &bar {
-                b.set_position((1000.0 * (x - g.x0) / (x_stop - g.x0)).clamp(0.0, 1000.0) as u64);
+                b.set_position((1000.0 * (x - g.x0) / (p.x_stop - g.x0)).clamp(0.0, 1000.0) as u64);
                 b.set_message(format!("{x:.4}"));
             }
         }
-        if x >= x_stop {
+        if x >= p.x_stop {
             break;
         }
         if let Err(b) = scene.sim.step() {
@@ -370,21 +367,21 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         c0_over_sqrt_gl: g.c0,
         particles: n,
         steps: scene.sim.steps,
-        wall_seconds: clock.elapsed().as_secs_f64(),
-        cpu_seconds: crate::bench::cpu_seconds() - cpu0,
+        wall_seconds: p.wall_before + clock.elapsed().as_secs_f64(),
+        cpu_seconds: p.cpu_before + crate::bench::cpu_seconds() - cpu0,
         x_end_over_l: scene.profile.x_at(scene.sim.time),
-        ke_after_settle,
-        far_field_eta_over_d: far_eta,
-        max_mach,
-        mass_change: (mass_end - total_mass) / total_mass,
+        ke_after_settle: p.ke_after_settle,
+        far_field_eta_over_d: p.far_eta,
+        max_mach: p.max_mach,
+        mass_change: (mass_end - p.total_mass) / p.total_mass,
         pressure_noise_over_rho_g_d: noise,
-        crest_at_end_over_d: crest,
+        crest_at_end_over_d: p.crest,
         wall_corrections: scene.sim.wall_corrections,
-        plunged: plunge.is_some(),
-        plunge,
+        plunged: p.plunge.is_some(),
+        plunge: p.plunge.clone(),
         blowup,
     };
-    let (bow_particles, bow_wall) = match bow {
+    let (bow_particles, bow_wall) = match p.bow.take() {
         Some(b) => b,
         None => {
             let s = snapshot(&mut scene);
@@ -393,10 +390,10 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     };
     bow_particles.write(&opts.out_dir.join("snapshot.csv"))?;
     bow_wall.write(&opts.out_dir.join("snapshot_wall.csv"))?;
-    series.write(&opts.out_dir.join("series.csv"))?;
-    eta_table.write(&opts.out_dir.join("eta.csv"))?;
+    p.series.write(&opts.out_dir.join("series.csv"))?;
+    p.eta_table.write(&opts.out_dir.join("eta.csv"))?;
     if opts.vtk {
-        vtk::write_pvd(&opts.out_dir.join("series.pvd"), &vtk_frames)?;
+        vtk::write_pvd(&opts.out_dir.join("series.pvd"), &p.vtk_frames)?;
     }
     write_atomic(
         &opts.out_dir.join("metrics.json"),
@@ -406,7 +403,95 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         &opts.out_dir.join("metrics.csv"),
         metrics_csv(std::slice::from_ref(&result)).as_bytes(),
     )?;
+    if ckpt_path.exists() {
+        std::fs::remove_file(&ckpt_path)
+            .map_err(|e| anyhow::anyhow!("cannot remove the finished run's {}: {e}", ckpt_path.display()))?;
+    }
     Ok(result)
+}
+
+/// A new run: builds the scene, lets it settle (1.) and sets up the passage loop.
+fn start(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, checkpoint::Passage, String)> {
+    let mut scene = build(hull.clone(), cfg)?;
+    let fingerprint = checkpoint::fingerprint(cfg, &scene);
+    let g = scene.geom.clone();
+    let total_mass: f64 = scene.sim.fluid.mass.iter().sum();
+
+    // 1. Damped settling: the section stands still at x0.
+    let ke_after_settle = scene.settle()? / (total_mass * g.draft);
+    log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
+    let bin = 4.0 * g.dx_f;
+    let eta0 = eta_profile(&scene.sim.fluid.pos, g.width, bin, g.dx_f);
+    let far_from = (0.75 * g.width / bin) as usize;
+    let columns = |c: &[&str]| c.iter().map(|s| s.to_string()).collect();
+    let series = Table::new(columns(&[
+        "x_over_l",
+        "t",
+        "steps",
+        "ke_over_mgd",
+        "max_mach",
+        "far_eta_over_d",
+        "surface_particles",
+        "wall_corrections",
+    ]));
+    let p = checkpoint::Passage {
+        steps0: scene.sim.steps,
+        total_mass,
+        ke_after_settle,
+        far_ref: mean_finite(&eta0[far_from..]),
+        far_eta: 0.0,
+        max_mach: 0.0,
+        plunge: None,
+        closure_watch: cavity::ClosureWatch::default(),
+        x_stop: match cfg.until {
+            Until::Plunge | Until::Transom => hull.x_range.1.min(g.x_end),
+            Until::X(x) => x,
+        },
+        next_output: g.x0,
+        vtk_frames: vec![],
+        crest: f64::NAN,
+        series,
+        eta_table: Table::new(columns(&["x_over_l", "y_over_l", "eta_over_d"])),
+        bow: None,
+        wall_before: 0.0,
+        cpu_before: 0.0,
+    };
+    Ok((scene, p, fingerprint))
+}
+
+/// The run saved in `path`, if resuming is asked, the file exists and is of this configuration. The scene is
+/// built unpacked (the checkpoint holds the packed particles).
+fn resume(
+    hull: &Arc<HullSurface>,
+    cfg: &TwoDtConfig,
+    opts: &TwoDtOptions,
+    path: &Path,
+) -> anyhow::Result<Option<(Scene, checkpoint::Passage, String)>> {
+    if !opts.checkpoint.resume || !path.exists() {
+        return Ok(None);
+    }
+    let unpacked = TwoDtConfig {
+        packing: Some(false),
+        ..cfg.clone()
+    };
+    let mut scene = build(hull.clone(), &unpacked)?;
+    let fingerprint = checkpoint::fingerprint(cfg, &scene);
+    match checkpoint::restore(path, &fingerprint, &mut scene) {
+        Ok(p) => {
+            log::info!(
+                "resuming from {} at x/L = {:.4}, step {}",
+                path.display(),
+                scene.profile.x_at(scene.sim.time),
+                scene.sim.steps
+            );
+            Ok(Some((scene, p, fingerprint)))
+        }
+        Err(e) if e.is::<checkpoint::OtherConfiguration>() => {
+            log::warn!("{e}: starting afresh (it will be overwritten)");
+            Ok(None)
+        }
+        Err(e) => Err(e),
+    }
 }
 
 /// The metrics rows as CSV: the fields of [`TwoDtResult`] in order, those of the plunge flattened in place

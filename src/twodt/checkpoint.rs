@@ -1,0 +1,277 @@
+//! Checkpoints of a 2D+t run: the particles and the state of the passage loop, saved every few minutes into
+//! the run's folder (`checkpoint.bin`, format of [`crate::io::checkpoint`]) so that a run stopped by a
+//! batch system's time limit, a kill or a crash goes on from where it was. A resumed run gives the same bits
+//! as an uninterrupted one (test `resumed_run_gives_the_same_bits_as_an_uninterrupted_one`): the time step
+//! carries no state besides the particles, the clock and the step count.
+
+use super::run::PlungeMetrics;
+use super::scene::Scene;
+use crate::analysis::cavity::ClosureWatch;
+use crate::analysis::level_set::LevelSet;
+use crate::io::checkpoint::Checkpoint;
+use crate::io::csv_table::Table;
+use crate::sph::particles::Fluid;
+use nalgebra::Vector2;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+/// File name of the checkpoint in a run's output folder.
+pub const FILE: &str = "checkpoint.bin";
+
+/// When to save and when to stop.
+#[derive(Clone, Debug, Default)]
+pub struct CheckpointPolicy {
+    /// Wall time between checkpoints; `None`: never save one (except when halting).
+    pub every: Option<Duration>,
+    /// Go on from the folder's checkpoint when there is one of the same configuration.
+    pub resume: bool,
+    /// Save and stop once this session of the run has used this much wall time (a batch job's limit).
+    pub wall_limit: Option<Duration>,
+    /// Save and stop at the first loop iteration with this many time steps done (tests; jobs split by steps).
+    pub halt_at_step: Option<u64>,
+}
+
+/// A run stopped on purpose ([`CheckpointPolicy::wall_limit`] or `halt_at_step`), its state saved.
+#[derive(Debug, thiserror::Error)]
+#[error("stopped at x/L = {x:.4} after {steps} steps, the state saved in {}: run the same command again to go on", .checkpoint.display())]
+pub struct Halted {
+    pub x: f64,
+    pub steps: u64,
+    pub checkpoint: PathBuf,
+}
+
+/// What the passage loop of [`super::run::run`] carries from one iteration to the next.
+#[derive(Clone, Debug)]
+pub struct Passage {
+    /// Step count when the ship started (after the settling); detection runs every `detect_every` from it.
+    pub steps0: u64,
+    pub total_mass: f64,
+    /// E_K/(M g D) left by the settling.
+    pub ke_after_settle: f64,
+    /// Mean far-field level at the start, and the largest departure from it so far / D.
+    pub far_ref: f64,
+    pub far_eta: f64,
+    pub max_mach: f64,
+    pub plunge: Option<PlungeMetrics>,
+    pub closure_watch: ClosureWatch,
+    pub x_stop: f64,
+    pub next_output: f64,
+    pub vtk_frames: Vec<(f64, String)>,
+    /// Crest height at the last output / D (NaN before the first).
+    pub crest: f64,
+    pub series: Table,
+    pub eta_table: Table,
+    /// Particle and wall tables of the bow region at the plunge.
+    pub bow: Option<(Table, Table)>,
+    /// Wall and CPU seconds spent in earlier sessions of this run.
+    pub wall_before: f64,
+    pub cpu_before: f64,
+}
+
+/// The small state, stored as the JSON header.
+#[derive(Serialize, Deserialize)]
+struct Header {
+    fingerprint: String,
+    time: f64,
+    steps: u64,
+    last_dt: f64,
+    wall_corrections: u64,
+    packing: Option<crate::sph::packing::PackingReport>,
+    steps0: u64,
+    total_mass: f64,
+    ke_after_settle: f64,
+    far_ref: f64,
+    far_eta: f64,
+    max_mach: f64,
+    plunge: Option<PlungeMetrics>,
+    x_stop: f64,
+    next_output: f64,
+    vtk_frames: Vec<(f64, String)>,
+    crest: Option<f64>,
+    tables: Vec<(String, Vec<String>)>,
+    level_set: Option<LevelSetHeader>,
+    wall_seconds: f64,
+    cpu_seconds: f64,
+}
+
+#[derive(Serialize, Deserialize)]
+struct LevelSetHeader {
+    origin: (f64, f64),
+    spacing: f64,
+    ny: usize,
+    nz: usize,
+    surface_level: f64,
+}
+
+/// What identifies the configuration of a run: a checkpoint of another configuration is not resumed.
+pub fn fingerprint(cfg: &super::scene::TwoDtConfig, scene: &Scene) -> String {
+    format!("{} | {cfg:?} | {:?}", scene.profile.hull.meta.name, scene.geom)
+}
+
+/// Saves the scene's particles and the loop state to `path` (atomically); `wall`/`cpu`: seconds so far.
+pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f64, cpu: f64) -> anyhow::Result<()> {
+    let sim = &scene.sim;
+    let f = &sim.fluid;
+    let mut c = Checkpoint::default();
+    let mut put = |name: &str, v: Vec<f64>| {
+        c.arrays.insert(name.to_string(), v);
+    };
+    put("pos_y", f.pos.iter().map(|p| p.x).collect());
+    put("pos_z", f.pos.iter().map(|p| p.y).collect());
+    put("vel_v", f.vel.iter().map(|v| v.x).collect());
+    put("vel_w", f.vel.iter().map(|v| v.y).collect());
+    put("rho", f.rho.clone());
+    put("mass", f.mass.clone());
+    put("id", f.id.iter().map(|&i| i as f64).collect());
+    put("tag", f.tag.clone());
+    put("initial_depth", scene.initial_depth.clone());
+    put("initial_row", scene.initial_row.iter().map(|&r| r as f64).collect());
+    let mut tables = vec![];
+    let mut put_table = |name: &str, t: &Table| {
+        tables.push((name.to_string(), t.columns.clone()));
+        put(name, t.rows.iter().flatten().copied().collect());
+    };
+    put_table("series", &p.series);
+    put_table("eta", &p.eta_table);
+    if let Some((a, b)) = &p.bow {
+        put_table("bow_particles", a);
+        put_table("bow_wall", b);
+    }
+    let level_set = p.closure_watch.previous().map(|(ls, mask)| {
+        put("closure_phi", ls.phi.clone());
+        put("closure_mask", mask.iter().map(|&b| b as u8 as f64).collect());
+        LevelSetHeader {
+            origin: (ls.origin.x, ls.origin.y),
+            spacing: ls.spacing,
+            ny: ls.ny,
+            nz: ls.nz,
+            surface_level: ls.surface_level,
+        }
+    });
+    c.header = serde_json::to_value(Header {
+        fingerprint: fingerprint.to_string(),
+        time: sim.time,
+        steps: sim.steps,
+        last_dt: sim.last_dt,
+        wall_corrections: sim.wall_corrections,
+        packing: scene.packing,
+        steps0: p.steps0,
+        total_mass: p.total_mass,
+        ke_after_settle: p.ke_after_settle,
+        far_ref: p.far_ref,
+        far_eta: p.far_eta,
+        max_mach: p.max_mach,
+        plunge: p.plunge.clone(),
+        x_stop: p.x_stop,
+        next_output: p.next_output,
+        vtk_frames: p.vtk_frames.clone(),
+        crest: p.crest.is_finite().then_some(p.crest),
+        tables,
+        level_set,
+        wall_seconds: wall,
+        cpu_seconds: cpu,
+    })?;
+    c.write(path)
+}
+
+/// Why a checkpoint was not resumed.
+#[derive(Debug, thiserror::Error)]
+#[error("checkpoint {} is of another configuration", .0.display())]
+pub struct OtherConfiguration(pub PathBuf);
+
+/// Puts the checkpoint's particles into `scene` (built for the same configuration) and returns the loop
+/// state. A checkpoint of another configuration gives [`OtherConfiguration`]; an unreadable one an error
+/// naming the file and what is wrong.
+pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Result<Passage> {
+    let c = Checkpoint::read(path)?;
+    let h: Header = serde_json::from_value(c.header.clone())
+        .map_err(|e| anyhow::anyhow!("checkpoint {}: header: {e}", path.display()))?;
+    if h.fingerprint != fingerprint {
+        return Err(OtherConfiguration(path.to_path_buf()).into());
+    }
+    let n = c.array(path, "rho", None)?.len();
+    let a = |name: &str| c.array(path, name, Some(n));
+    let v2 = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(&x, &y)| Vector2::new(x, y)).collect();
+    scene.sim.fluid = Fluid {
+        pos: v2(a("pos_y")?, a("pos_z")?),
+        vel: v2(a("vel_v")?, a("vel_w")?),
+        rho: a("rho")?.to_vec(),
+        mass: a("mass")?.to_vec(),
+        id: a("id")?.iter().map(|&i| i as u32).collect(),
+        tag: a("tag")?.to_vec(),
+    };
+    scene.initial_depth = c.array(path, "initial_depth", None)?.to_vec();
+    scene.initial_row = c
+        .array(path, "initial_row", None)?
+        .iter()
+        .map(|&r| r as usize)
+        .collect();
+    scene.packing = h.packing;
+    scene.sim.time = h.time;
+    scene.sim.steps = h.steps;
+    scene.sim.last_dt = h.last_dt;
+    scene.sim.wall_corrections = h.wall_corrections;
+    let table = |name: &str| -> anyhow::Result<Option<Table>> {
+        let Some((_, columns)) = h.tables.iter().find(|(t, _)| t == name) else {
+            return Ok(None);
+        };
+        let flat = c.array(path, name, None)?;
+        if columns.is_empty() || flat.len() % columns.len() != 0 {
+            anyhow::bail!(
+                "checkpoint {}: table `{name}` holds {} values, not a whole number of rows",
+                path.display(),
+                flat.len()
+            );
+        }
+        Ok(Some(Table {
+            columns: columns.clone(),
+            rows: flat.chunks(columns.len()).map(|r| r.to_vec()).collect(),
+        }))
+    };
+    let missing = |name: &str| anyhow::anyhow!("checkpoint {}: no table `{name}`", path.display());
+    let bow = match (table("bow_particles")?, table("bow_wall")?) {
+        (Some(a), Some(b)) => Some((a, b)),
+        _ => None,
+    };
+    let previous = match &h.level_set {
+        Some(l) => {
+            let cells = Some(l.ny * l.nz);
+            let phi = c.array(path, "closure_phi", cells)?.to_vec();
+            let mask = c
+                .array(path, "closure_mask", cells)?
+                .iter()
+                .map(|&b| b != 0.0)
+                .collect();
+            let ls = LevelSet {
+                origin: Vector2::new(l.origin.0, l.origin.1),
+                spacing: l.spacing,
+                ny: l.ny,
+                nz: l.nz,
+                phi,
+                surface_level: l.surface_level,
+            };
+            Some((ls, mask))
+        }
+        None => None,
+    };
+    Ok(Passage {
+        steps0: h.steps0,
+        total_mass: h.total_mass,
+        ke_after_settle: h.ke_after_settle,
+        far_ref: h.far_ref,
+        far_eta: h.far_eta,
+        max_mach: h.max_mach,
+        plunge: h.plunge,
+        closure_watch: ClosureWatch::resume(previous),
+        x_stop: h.x_stop,
+        next_output: h.next_output,
+        vtk_frames: h.vtk_frames,
+        crest: h.crest.unwrap_or(f64::NAN),
+        series: table("series")?.ok_or_else(|| missing("series"))?,
+        eta_table: table("eta")?.ok_or_else(|| missing("eta"))?,
+        bow,
+        wall_before: h.wall_seconds,
+        cpu_before: h.cpu_seconds,
+    })
+}
