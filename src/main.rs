@@ -103,10 +103,11 @@ enum Command {
         /// Free-surface detection and plunge check every N steps.
         #[arg(long, default_value_t = 10)]
         detect_every: usize,
-        /// A closed air cavity counts as the plunge only if its lowest point lies below this fraction of the
-        /// crest height (our criterion against folds high in a sheet; ≥ 1 turns it off; docs/jet-metrics.md).
-        #[arg(long, default_value_t = 0.5)]
-        plunge_depth: f64,
+        /// Optional extra plunge criterion (ours, not the issue's; off by default): a closed air cavity counts
+        /// as the plunge only if its lowest point lies below this fraction of the crest height, e.g. 0.5 to
+        /// keep folds high in a sheet out (docs/jet-metrics.md).
+        #[arg(long)]
+        plunge_depth: Option<f64>,
         /// x/L between outputs (series row, η profile, VTK frame).
         #[arg(long, default_value_t = 0.005)]
         output_dx: f64,
@@ -679,8 +680,8 @@ fn run() -> anyhow::Result<()> {
         } => {
             let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
             let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
-            if !(plunge_depth.is_finite() && plunge_depth > 0.0) {
-                anyhow::bail!("--plunge-depth {plunge_depth}: expected a positive fraction of the crest height");
+            if let Some(f) = plunge_depth.filter(|f| !(f.is_finite() && *f > 0.0)) {
+                anyhow::bail!("--plunge-depth {f}: expected a positive fraction of the crest height");
             }
             let cfg = bowwave::twodt::scene::TwoDtConfig {
                 fr,

@@ -112,16 +112,12 @@ fn snapshot(scene: &mut Scene) -> Snapshot {
     Snapshot::from_simulation(&mut scene.sim, scene.geom.dx_f)
 }
 
-/// A cavity counts as a plunge only if its lowest point is below this fraction of the crest height: the
-/// default of [`TwoDtConfig::plunge_depth`](super::scene::TwoDtConfig::plunge_depth).
-pub const PLUNGE_CAVITY_DEPTH: f64 = 0.5;
-
 /// Looks for a closed air cavity at the bow wave; returns the metrics and the cavity if the wave has plunged.
 fn plunge_check(
     scene: &Scene,
     s: &Snapshot,
     t: f64,
-    plunge_depth: f64,
+    plunge_depth: Option<f64>,
     watch: &mut cavity::ClosureWatch,
 ) -> Option<(PlungeMetrics, cavity::Cavity)> {
     let g = &scene.geom;
@@ -151,7 +147,7 @@ fn plunge_check(
     // into the lower part of the wave. Loops folded within a thin sheet high on the crest are not plunges.
     let (c, crest) = closed.into_iter().find_map(|c| {
         let crest = crest_of(&c);
-        (c.lo.y < plunge_depth * crest).then_some((c, crest))
+        plunge_depth.is_none_or(|f| c.lo.y < f * crest).then_some((c, crest))
     })?;
     let u = g.fr;
     let idx = jet::jet_particles(s, &ls, &c);

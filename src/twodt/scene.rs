@@ -75,11 +75,12 @@ pub struct TwoDtConfig {
     pub settle_crossings: f64,
     /// Free-surface detection and plunge check every this many steps. Default 10.
     pub detect_every: usize,
-    /// A closed cavity counts as the plunge only if its lowest point lies below this fraction of the crest
-    /// height (criterion 3 of docs/jet-metrics.md, ours, not the issue's); default 0.5. Values ≥ 1 turn the
-    /// criterion off. Athena Fr 0.5 at dx/L = 5e-4 closes a cavity at x/L 0.35 whose bottom is at 0.55 of
-    /// the crest: rejected at 0.5 (docs/twodt.md).
-    pub plunge_depth: f64,
+    /// Optional criterion 3 of docs/jet-metrics.md (ours, not the issue's): a closed cavity counts as the
+    /// plunge only if its lowest point lies below this fraction of the crest height. Default `None` (off):
+    /// the definition has no such test, and Athena Fr 0.5 closes the same cavity at dx/L = 7e-4 and
+    /// 5e-4 (x/L 0.365 and 0.350, bottom at 0.55 of the crest) that the former default of 0.5 rejected,
+    /// while the coarse runs detect nothing false without it (docs/twodt.md).
+    pub plunge_depth: Option<f64>,
     /// x/L between outputs (series row, η(y) profile, VTK frame). Default 0.005.
     pub output_dx: f64,
     /// Density diffusion: δ-SPH (5.2) by default; standard WCSPH (none) or Molteni–Colagrossi (5.4) as method
@@ -113,7 +114,7 @@ impl Default for TwoDtConfig {
             c0: None,
             settle_crossings: 1.0,
             detect_every: 10,
-            plunge_depth: super::run::PLUNGE_CAVITY_DEPTH,
+            plunge_depth: None,
             output_dx: 0.005,
             diffusion: Default::default(),
             kernel_table: true,
