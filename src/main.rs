@@ -171,7 +171,21 @@ enum Command {
         /// twodt: x/L at which a run that has not plunged gives up.
         #[arg(long)]
         give_up_at: Option<f64>,
-        /// Output folder for converge.csv (default out/converge-CASE).
+        /// twodt: free-surface detection and plunge check every N steps.
+        #[arg(long, default_value_t = 10)]
+        detect_every: usize,
+        /// twodt: gather finished `bowwave twodt` runs (their folders, coarse to fine, comma separated)
+        /// instead of running the ladder.
+        #[arg(long, value_delimiter = ',')]
+        runs: Vec<PathBuf>,
+        /// twodt: minutes between checkpoints of the running spacing (0: none); run the same command again
+        /// to go on from it. Finished spacings (OUT/dx-*/converge_run.json) are reused.
+        #[arg(long, default_value_t = 10.0)]
+        checkpoint_every: f64,
+        /// twodt: stop after this many minutes of wall time with a checkpoint (exit status 3).
+        #[arg(long)]
+        wall_limit: Option<f64>,
+        /// Output folder for converge.csv and, for twodt, one folder per spacing (default out/converge-CASE).
         #[arg(long)]
         out: Option<PathBuf>,
     },
@@ -560,25 +574,43 @@ fn run() -> anyhow::Result<()> {
             dx,
             until,
             give_up_at,
+            detect_every,
+            runs,
+            checkpoint_every,
+            wall_limit,
             out,
         } => {
-            let (conv, name) = if case == "twodt" {
+            let (conv, out) = if case == "twodt" && !runs.is_empty() {
+                let out = out.unwrap_or_else(|| PathBuf::from("out").join("converge-twodt-runs"));
+                (bowwave::studies::twodt_convergence::converge_finished(&runs)?, out)
+            } else if case == "twodt" {
                 let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
                 let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
                 let base = bowwave::twodt::scene::TwoDtConfig {
                     fr,
                     until: until.parse().map_err(anyhow::Error::msg)?,
                     give_up_at,
+                    detect_every,
                     ..Default::default()
                 };
-                let conv = bowwave::studies::twodt_convergence::converge_twodt(surface, &base, &dx)?;
-                (conv, format!("twodt-{}-fr{fr}", offsets.meta.name))
+                let out = out.unwrap_or_else(|| {
+                    PathBuf::from("out").join(format!("converge-twodt-{}-fr{fr}", offsets.meta.name))
+                });
+                let policy = bowwave::twodt::checkpoint::CheckpointPolicy {
+                    every: minutes("--checkpoint-every", checkpoint_every)?,
+                    resume: true,
+                    wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
+                    halt_at_step: None,
+                };
+                let conv =
+                    bowwave::studies::twodt_convergence::converge_twodt(surface, &base, &dx, &out, &policy, true);
+                (exit_if_halted(conv)?, out)
             } else {
                 let c = bowwave::cases::load(&case)?;
-                (bowwave::convergence::converge(&c, &res, end)?, c.name.clone())
+                let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{}", c.name)));
+                (bowwave::convergence::converge(&c, &res, end)?, out)
             };
             print!("{}", conv.report());
-            let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{name}")));
             std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
             bowwave::io::atomic::write_atomic(&out.join("converge.csv"), conv.csv().as_bytes())?;
             println!("table in {}", out.join("converge.csv").display());
@@ -728,17 +760,7 @@ fn run() -> anyhow::Result<()> {
                     halt_at_step: None,
                 },
             };
-            let r = match bowwave::twodt::run::run(surface, &cfg, &opts) {
-                Ok(r) => r,
-                Err(e) => match e.downcast_ref::<bowwave::twodt::checkpoint::Halted>() {
-                    // Not a failure: the state is saved; exit status 3 tells a batch script to submit again.
-                    Some(h) => {
-                        eprintln!("{h}");
-                        std::process::exit(3);
-                    }
-                    None => return Err(e),
-                },
-            };
+            let r = exit_if_halted(bowwave::twodt::run::run(surface, &cfg, &opts))?;
             bowwave::twodt::report::print(&r, &out);
             if r.blowup.is_some() {
                 std::process::exit(2);
@@ -894,4 +916,16 @@ fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> 
         anyhow::bail!("{option} {m}: expected a number of minutes, 0 or more");
     }
     Ok((m > 0.0).then(|| std::time::Duration::from_secs_f64(60.0 * m)))
+}
+
+/// A 2D+t run stopped on purpose with its state saved ([`bowwave::twodt::checkpoint::Halted`]) is not a
+/// failure: says where it stopped and exits with status 3, which tells a batch script to submit it again.
+fn exit_if_halted<T>(r: anyhow::Result<T>) -> anyhow::Result<T> {
+    if let Err(e) = &r {
+        if let Some(h) = e.downcast_ref::<bowwave::twodt::checkpoint::Halted>() {
+            eprintln!("{h}");
+            std::process::exit(3);
+        }
+    }
+    r
 }

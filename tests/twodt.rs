@@ -270,3 +270,41 @@ fn resumed_run_gives_the_same_bits_as_an_uninterrupted_one() {
     }
     let _ = std::fs::remove_dir_all(&base);
 }
+
+/// `converge twodt` keeps each spacing's run in its folder: a second call reuses the finished runs instead of
+/// running them again, and `--runs` gathers the same folders into the same table (coarse to fine only).
+#[test]
+fn convergence_ladder_reuses_finished_runs_and_gathers_run_folders() {
+    use bowwave::studies::twodt_convergence::{converge_finished, converge_twodt, run_dir};
+    use bowwave::twodt::checkpoint::CheckpointPolicy;
+    let base = TwoDtConfig {
+        output_dx: 0.01,
+        ..athena_cfg(None, Until::X(0.03))
+    };
+    let out = std::env::temp_dir().join(format!("bowwave-ladder-{}", std::process::id()));
+    let dxs = [5e-3, 4e-3];
+    let policy = CheckpointPolicy::default();
+    let first = converge_twodt(athena(), &base, &dxs, &out, &policy, false).unwrap();
+    let again = converge_twodt(athena(), &base, &dxs, &out, &policy, false).unwrap();
+    assert_eq!(
+        first.wall_seconds, again.wall_seconds,
+        "the second call reuses the recorded runs"
+    );
+    let crest = |c: &bowwave::convergence::Convergence| {
+        let q = c.quantities.iter().find(|q| q.name.starts_with("crest")).unwrap();
+        q.values.iter().map(|v| v.0).collect::<Vec<_>>()
+    };
+    assert!(crest(&first).iter().all(|c| c.is_finite() && *c > 0.0));
+    let dirs: Vec<_> = dxs.iter().map(|&d| run_dir(&out, d)).collect();
+    let gathered = converge_finished(&dirs).unwrap();
+    assert_eq!(crest(&gathered), crest(&first));
+    let reversed: Vec<_> = dirs.iter().rev().cloned().collect();
+    let e = format!("{:#}", converge_finished(&reversed).unwrap_err());
+    assert!(e.contains("coarse to fine"), "{e}");
+    let e = format!(
+        "{:#}",
+        converge_finished(&[dirs[0].clone(), out.join("nowhere")]).unwrap_err()
+    );
+    assert!(e.contains("nowhere") && e.contains("metrics.json"), "{e}");
+    let _ = std::fs::remove_dir_all(&out);
+}

@@ -7,8 +7,11 @@
 
 use crate::convergence::{Convergence, Quantity};
 use crate::geometry::surface::HullSurface;
+use crate::io::atomic::write_atomic;
+use crate::twodt::checkpoint::CheckpointPolicy;
 use crate::twodt::run::{run, PlungeMetrics, TwoDtOptions, TwoDtResult};
 use crate::twodt::scene::TwoDtConfig;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 /// A jet metric: its name in the report and how to read it from the plunge metrics.
@@ -95,9 +98,35 @@ pub fn convergence_of(label: &str, results: &[TwoDtResult]) -> Convergence {
     c
 }
 
-/// Runs `base` at each fine spacing in `dxs` (coarse to fine) and gathers the convergence. A run that stops
-/// early ends the study with its diagnosis.
-pub fn converge_twodt(hull: Arc<HullSurface>, base: &TwoDtConfig, dxs: &[f64]) -> anyhow::Result<Convergence> {
+/// A finished run of a ladder, as recorded in its folder ([`RECORD`]).
+#[derive(serde::Serialize, serde::Deserialize)]
+struct LadderRun {
+    /// The hull's name and the run's full configuration: a record of another configuration is run again.
+    configuration: String,
+    result: TwoDtResult,
+}
+
+/// File name of a finished ladder run's record in its folder.
+pub const RECORD: &str = "converge_run.json";
+
+/// The folder of the run at spacing `dx` in a ladder's output folder.
+pub fn run_dir(out: &Path, dx: f64) -> PathBuf {
+    out.join(format!("dx-{dx:.3e}"))
+}
+
+/// Runs `base` at each fine spacing in `dxs` (coarse to fine), each in its folder [`run_dir`] with its
+/// outputs and checkpoints (`policy`), and gathers the convergence. A run recorded as finished with the same
+/// configuration is reused, and a run stopped part-way goes on from its checkpoint, so a ladder whose finest
+/// runs take hours can be spread over several sessions or batch jobs. A run that stops early ends the study
+/// with its diagnosis.
+pub fn converge_twodt(
+    hull: Arc<HullSurface>,
+    base: &TwoDtConfig,
+    dxs: &[f64],
+    out: &Path,
+    policy: &CheckpointPolicy,
+    progress: bool,
+) -> anyhow::Result<Convergence> {
     anyhow::ensure!(dxs.len() >= 2, "--dx: expected at least two spacings");
     anyhow::ensure!(
         dxs.windows(2).all(|w| w[1] < w[0]) && dxs.iter().all(|&d| d > 0.0),
@@ -107,11 +136,31 @@ pub fn converge_twodt(hull: Arc<HullSurface>, base: &TwoDtConfig, dxs: &[f64]) -
     for &dx in dxs {
         let mut cfg = base.clone();
         cfg.dx = Some(dx);
-        let opts =
-            TwoDtOptions::quiet(std::env::temp_dir().join(format!("bowwave-converge-twodt-{}", std::process::id())));
-        let r = run(hull.clone(), &cfg, &opts);
-        let _ = std::fs::remove_dir_all(&opts.out_dir);
-        let r = r?;
+        let dir = run_dir(out, dx);
+        let configuration = format!("{} | {cfg:?}", hull.meta.name);
+        let recorded = std::fs::read_to_string(dir.join(RECORD))
+            .ok()
+            .and_then(|t| serde_json::from_str::<LadderRun>(&t).ok())
+            .filter(|r| r.configuration == configuration);
+        let r = match recorded {
+            Some(rec) => {
+                log::info!("dx/L {dx}: finished run reused from {}", dir.display());
+                rec.result
+            }
+            None => {
+                let opts = TwoDtOptions {
+                    progress,
+                    plots: true,
+                    label: format!("dx/L {dx:.3e} "),
+                    checkpoint: policy.clone(),
+                    ..TwoDtOptions::quiet(dir.clone())
+                };
+                let result = run(hull.clone(), &cfg, &opts)?;
+                let rec = LadderRun { configuration, result };
+                write_atomic(&dir.join(RECORD), serde_json::to_string_pretty(&rec)?.as_bytes())?;
+                rec.result
+            }
+        };
         if let Some(b) = &r.blowup {
             anyhow::bail!("the 2D+t run at dx/L = {dx} stopped early: {b}");
         }
@@ -124,6 +173,43 @@ pub fn converge_twodt(hull: Arc<HullSurface>, base: &TwoDtConfig, dxs: &[f64]) -
         results.push(r);
     }
     let label = format!("{} Fr {} (2D+t)", results[0].hull, base.fr);
+    Ok(convergence_of(&label, &results))
+}
+
+/// The convergence of finished `bowwave twodt` runs, from their folders' `metrics.json`, coarse to fine:
+/// runs made one by one (with their own options, or on several machines) gathered into one table. They must
+/// be of one hull and Froude number, at decreasing spacings.
+pub fn converge_finished(dirs: &[PathBuf]) -> anyhow::Result<Convergence> {
+    anyhow::ensure!(dirs.len() >= 2, "--runs: expected at least two run folders");
+    let results = dirs
+        .iter()
+        .map(|d| {
+            let path = d.join("metrics.json");
+            let text = std::fs::read_to_string(&path).map_err(|e| {
+                anyhow::anyhow!("{}: {e} (expected the metrics of a finished twodt run)", path.display())
+            })?;
+            serde_json::from_str::<TwoDtResult>(&text).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let first = &results[0];
+    for (d, r) in dirs.iter().zip(&results) {
+        anyhow::ensure!(
+            r.hull == first.hull && r.fr == first.fr,
+            "{}: {} at Fr {}, expected {} at Fr {} like {}",
+            d.display(),
+            r.hull,
+            r.fr,
+            first.hull,
+            first.fr,
+            dirs[0].display()
+        );
+    }
+    anyhow::ensure!(
+        results.windows(2).all(|w| w[1].dx_over_l < w[0].dx_over_l),
+        "--runs: expected the folders from coarse to fine, found dx/L {:?}",
+        results.iter().map(|r| r.dx_over_l).collect::<Vec<_>>()
+    );
+    let label = format!("{} Fr {} (2D+t)", first.hull, first.fr);
     Ok(convergence_of(&label, &results))
 }
 
