@@ -11,9 +11,9 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 /// Throughput of a 2D+t run on this project's reference machine (2 cores), particle-steps per second, with
-/// detection every 10 steps and the outputs: measured on Athena Fr 0.5, dx/L = 7e-4, 83 061 particles,
-/// 1457 steps in 632 s (BENCHMARKS.md). Used only for the `--dry-run` estimate.
-pub const REFERENCE_THROUGHPUT: f64 = 1.9e5;
+/// detection every 5 steps and the outputs: measured on Athena Fr 0.5, dx/L = 5e-4, r = 1.5 packed, 95 890
+/// particles, 2 880 steps in 879.7 s (BENCHMARKS.md, session 7). Used only for the `--dry-run` estimate.
+pub const REFERENCE_THROUGHPUT: f64 = 3.1e5;
 
 /// What to run.
 #[derive(Clone, Debug)]
