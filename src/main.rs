@@ -661,8 +661,11 @@ fn run() -> anyhow::Result<()> {
                     jobs,
                     threads: rayon::current_num_threads(),
                     progress: !quiet,
-                    checkpoint_every: minutes("--checkpoint-every", checkpoint_every)?,
-                    wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
+                    checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
+                        every: minutes("--checkpoint-every", checkpoint_every)?,
+                        wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
+                        ..Default::default()
+                    },
                 };
                 let ran = studies::runner::run_cases(&study, &opts)?;
                 println!("{ran} case(s) run");

@@ -81,8 +81,7 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
         jobs: 1,
         threads: 1,
         progress: false,
-        checkpoint_every: None,
-        wall_limit: None,
+        checkpoint: Default::default(),
     };
     assert_eq!(
         runner::run_cases(&study, &opts).unwrap(),
@@ -150,4 +149,66 @@ fn dry_run_does_not_pack_the_scenes() {
     let packed = bowwave::twodt::scene::build(surface, &spec.config()).unwrap();
     assert!(packed.packing.is_some(), "the case itself packs (r = 1.5)");
     assert_eq!(est[0].particles, packed.sim.n_fluid());
+}
+
+/// A study whose case is stopped part-way (as by a kill or a batch time limit, after a checkpoint) and run
+/// again ends with the same tables as one that ran through: jets.csv (timing columns aside) and
+/// comparison.csv are identical.
+#[test]
+fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
+    let dir = std::env::temp_dir().join(format!("bowwave-study-killed-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let path = write_study(
+        &dir,
+        "killed",
+        "froude = [0.64]\n[resolution]\ndx = [4e-3]\n[stop]\nuntil = 0.05\n",
+    );
+    let study = Study::read(&path).unwrap();
+    let options = |out: &Path, halt: Option<u64>| runner::StudyOptions {
+        out_dir: out.to_path_buf(),
+        force: false,
+        case: None,
+        jobs: 1,
+        threads: 1,
+        progress: false,
+        checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
+            halt_at_step: halt,
+            ..Default::default()
+        },
+    };
+    let (through, stopped) = (dir.join("through"), dir.join("stopped"));
+    assert_eq!(runner::run_cases(&study, &options(&through, None)).unwrap(), 1);
+    collect_all(&study, &through).unwrap();
+    let steps = runner::collect_finished(&study, &through)[0].result.steps;
+    let e = runner::run_cases(&study, &options(&stopped, Some(steps / 2))).expect_err("stopped part-way");
+    assert!(format!("{e:#}").contains("stopped at x/L"), "{e:#}");
+    assert!(
+        runner::collect_finished(&study, &stopped).is_empty(),
+        "a stopped case is not finished"
+    );
+    assert_eq!(runner::run_cases(&study, &options(&stopped, None)).unwrap(), 1);
+    collect_all(&study, &stopped).unwrap();
+    let without_timings = |out: &Path| {
+        let text = std::fs::read_to_string(out.join("jets.csv")).unwrap();
+        let mut rows = text
+            .lines()
+            .map(|l| l.split(',').map(str::to_string).collect::<Vec<_>>());
+        let header = rows.next().unwrap();
+        let keep: Vec<bool> = header.iter().map(|c| !c.contains("seconds")).collect();
+        assert!(keep.iter().any(|k| !k), "jets.csv has timing columns: {header:?}");
+        std::iter::once(header)
+            .chain(rows)
+            .map(|r| {
+                r.into_iter()
+                    .zip(&keep)
+                    .filter(|(_, k)| **k)
+                    .map(|(c, _)| c)
+                    .collect::<Vec<_>>()
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(without_timings(&through), without_timings(&stopped));
+    let comparison = |out: &Path| std::fs::read_to_string(out.join("comparison.csv")).unwrap();
+    assert_eq!(comparison(&through), comparison(&stopped));
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -28,10 +28,9 @@ pub struct StudyOptions {
     /// Worker threads in all.
     pub threads: usize,
     pub progress: bool,
-    /// Wall time between checkpoints of a running case; `None`: none.
-    pub checkpoint_every: Option<std::time::Duration>,
-    /// Stop the running case after this much wall time, with a checkpoint.
-    pub wall_limit: Option<std::time::Duration>,
+    /// Checkpoints of the running case: how often, and when to stop with one. Its `resume` is not read:
+    /// a case goes on from its checkpoint unless `force` is set.
+    pub checkpoint: crate::twodt::checkpoint::CheckpointPolicy,
 }
 
 /// A finished case as recorded in its folder (`case.json`).
@@ -272,10 +271,8 @@ fn run_one(
         multi: Some(multi.clone()),
         label: format!("{} Fr {:.3} ", study.spec.name, spec.fr),
         checkpoint: crate::twodt::checkpoint::CheckpointPolicy {
-            every: opts.checkpoint_every,
             resume: !opts.force,
-            wall_limit: opts.wall_limit,
-            halt_at_step: None,
+            ..opts.checkpoint.clone()
         },
     };
     let result = run(hull.clone(), &spec.config(), &topts)?;
