@@ -596,12 +596,7 @@ fn run() -> anyhow::Result<()> {
                 let out = out.unwrap_or_else(|| {
                     PathBuf::from("out").join(format!("converge-twodt-{}-fr{fr}", offsets.meta.name))
                 });
-                let policy = bowwave::twodt::checkpoint::CheckpointPolicy {
-                    every: minutes("--checkpoint-every", checkpoint_every)?,
-                    resume: true,
-                    wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
-                    halt_at_step: None,
-                };
+                let policy = checkpoint_policy(checkpoint_every, wall_limit, true)?;
                 let conv =
                     bowwave::studies::twodt_convergence::converge_twodt(surface, &base, &dx, &out, &policy, true);
                 (exit_if_halted(conv)?, out)
@@ -661,11 +656,8 @@ fn run() -> anyhow::Result<()> {
                     jobs,
                     threads: rayon::current_num_threads(),
                     progress: !quiet,
-                    checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
-                        every: minutes("--checkpoint-every", checkpoint_every)?,
-                        wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
-                        ..Default::default()
-                    },
+                    // `resume` is set per case by the runner (not with --force).
+                    checkpoint: checkpoint_policy(checkpoint_every, wall_limit, true)?,
                 };
                 let ran = studies::runner::run_cases(&study, &opts)?;
                 println!("{ran} case(s) run");
@@ -756,12 +748,7 @@ fn run() -> anyhow::Result<()> {
                 frames,
                 multi: None,
                 label: String::new(),
-                checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
-                    every: minutes("--checkpoint-every", checkpoint_every)?,
-                    resume: !fresh,
-                    wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
-                    halt_at_step: None,
-                },
+                checkpoint: checkpoint_policy(checkpoint_every, wall_limit, !fresh)?,
             };
             let r = exit_if_halted(bowwave::twodt::run::run(surface, &cfg, &opts))?;
             bowwave::twodt::report::print(&r, &out);
@@ -919,6 +906,21 @@ fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> 
         anyhow::bail!("{option} {m}: expected a number of minutes, 0 or more");
     }
     Ok((m > 0.0).then(|| std::time::Duration::from_secs_f64(60.0 * m)))
+}
+
+/// The checkpoint policy of `--checkpoint-every` and `--wall-limit` (minutes), shared by twodt, converge and
+/// study.
+fn checkpoint_policy(
+    every: f64,
+    wall_limit: Option<f64>,
+    resume: bool,
+) -> anyhow::Result<bowwave::twodt::checkpoint::CheckpointPolicy> {
+    Ok(bowwave::twodt::checkpoint::CheckpointPolicy {
+        every: minutes("--checkpoint-every", every)?,
+        resume,
+        wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
+        halt_at_step: None,
+    })
 }
 
 /// A 2D+t run stopped on purpose with its state saved ([`bowwave::twodt::checkpoint::Halted`]) is not a

@@ -69,8 +69,9 @@ pub struct Estimate {
 /// Builds each case's scene (no time step) to count its particles and estimate its steps (from the
 /// acoustic time-step limit at c0 with a 10 % margin for the flow speed) and its run time at
 /// [`REFERENCE_THROUGHPUT`]. A plunge search is estimated to its give-up point, the worst case. The scenes are
-/// built unpacked: the packing moves particles but never adds or removes one, and at the published
-/// resolutions it would cost minutes per case (regression test `dry_run_does_not_pack_the_scenes`).
+/// built unpacked ([`TwoDtConfig::unpacked`](crate::twodt::scene::TwoDtConfig::unpacked), the same count): at
+/// the published resolutions the packing would cost minutes per case (regression test
+/// `dry_run_does_not_pack_the_scenes`).
 pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
     let hull = surface(study)?;
     study
@@ -96,10 +97,7 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
 
 /// The configuration a dry run builds its scene from: the case's, without the packing.
 pub fn dry_run_config(spec: &CaseSpec) -> crate::twodt::scene::TwoDtConfig {
-    crate::twodt::scene::TwoDtConfig {
-        packing: Some(false),
-        ..spec.config()
-    }
+    spec.config().unpacked()
 }
 
 fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {

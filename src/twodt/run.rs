@@ -176,6 +176,13 @@ fn plunge_check(
     Some((pm, c))
 }
 
+/// The bins of η(y): their width (4 dx_f) and the first bin of the far field (y > 3W/4), where the calm level is
+/// watched.
+fn eta_bins(g: &super::scene::SceneGeometry) -> (f64, usize) {
+    let bin = 4.0 * g.dx_f;
+    (bin, (0.75 * g.width / bin) as usize)
+}
+
 /// Free-surface elevation η(y) as the top of the fluid in bins of `bin` across [0, width] (NaN where empty).
 fn eta_profile(pos: &[V2], width: f64, bin: f64, dx: f64) -> Vec<f64> {
     let n = (width / bin).ceil() as usize;
@@ -244,8 +251,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         );
         b
     });
-    let bin = 4.0 * g.dx_f;
-    let far_from = (0.75 * g.width / bin) as usize;
+    let (bin, far_from) = eta_bins(&g);
     let mut blowup = None;
     let mut last_save = Instant::now();
     let policy = &opts.checkpoint;
@@ -416,9 +422,8 @@ fn start(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, c
     // 1. Damped settling: the section stands still at x0.
     let ke_after_settle = scene.settle()? / (total_mass * g.draft);
     log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
-    let bin = 4.0 * g.dx_f;
+    let (bin, far_from) = eta_bins(&g);
     let eta0 = eta_profile(&scene.sim.fluid.pos, g.width, bin, g.dx_f);
-    let far_from = (0.75 * g.width / bin) as usize;
     let columns = |c: &[&str]| c.iter().map(|s| s.to_string()).collect();
     let series = Table::new(columns(&[
         "x_over_l",
@@ -466,11 +471,7 @@ fn resume(
     if !opts.checkpoint.resume || !path.exists() {
         return Ok(None);
     }
-    let unpacked = TwoDtConfig {
-        packing: Some(false),
-        ..cfg.clone()
-    };
-    let mut scene = build(hull.clone(), &unpacked)?;
+    let mut scene = build(hull.clone(), &cfg.unpacked())?;
     let fingerprint = checkpoint::fingerprint(cfg, &scene);
     match checkpoint::restore(path, &fingerprint, &mut scene) {
         Ok(p) => {

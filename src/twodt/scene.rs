@@ -99,6 +99,19 @@ pub struct TwoDtConfig {
     pub packing: Option<bool>,
 }
 
+impl TwoDtConfig {
+    /// The same configuration without the packing: for building a scene whose particles come from elsewhere
+    /// (a checkpoint) or are only counted (a dry run). The packing moves particles inside the tank; it adds
+    /// none and removes none, except for the rare particle it moves across the section's edge when a run
+    /// starts inside the hull.
+    pub fn unpacked(&self) -> TwoDtConfig {
+        TwoDtConfig {
+            packing: Some(false),
+            ..self.clone()
+        }
+    }
+}
+
 impl Default for TwoDtConfig {
     fn default() -> Self {
         TwoDtConfig {
