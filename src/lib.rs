@@ -3,6 +3,7 @@
 //! * [`sph`]: the solver core, generic over the dimension; knows nothing of hulls, CLI or files.
 //! * [`geometry`]: hull offsets files, the spline surface and its 2D+t sections; knows nothing of SPH.
 //! * [`cases`]: case descriptions (TOML) and the built-in cases, turned into simulations and run.
+//! * [`input_error`]: errors in user files, naming the file, the field and what was expected.
 //! * [`validation`]: comparisons with analytic solutions and published data.
 //! * [`io`]: writers, one file per format (CSV, VTK, PNG plots), and atomic writes.
 //! * [`bench`]: throughput measurement.
@@ -12,6 +13,7 @@ pub mod bench;
 pub mod cases;
 pub mod convergence;
 pub mod geometry;
+pub mod input_error;
 pub mod io;
 pub mod reference;
 pub mod sph;

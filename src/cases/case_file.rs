@@ -2,26 +2,12 @@
 //! outputs). Units are SI and given in the comments of the built-in cases (`cases/*.toml`).
 //! Every error names the file, the field and what was expected.
 
+use crate::input_error::{parse_toml, read_text, InputError};
 use crate::sph::{
     density_diffusion::DensityDiffusion, eos::EosKind, integrator::Integrator, kernel::KernelKind,
     polyline_wall::FluidSide, viscosity::Viscosity,
 };
 use serde::{Deserialize, Serialize};
-
-/// An error in a case file.
-#[derive(Debug, thiserror::Error)]
-pub enum CaseError {
-    #[error("{file}: cannot read: {source}")]
-    Io { file: String, source: std::io::Error },
-    #[error("{file}: {message}")]
-    Syntax { file: String, message: String },
-    #[error("{file}: field `{field}`: expected {expected}")]
-    Field {
-        file: String,
-        field: String,
-        expected: String,
-    },
-}
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -259,31 +245,19 @@ pub struct Output {
 
 impl CaseFile {
     /// Parses and checks a case from TOML text; `file` names it in errors.
-    pub fn parse(text: &str, file: &str) -> Result<Self, CaseError> {
-        let case: CaseFile = toml::from_str(text).map_err(|e| CaseError::Syntax {
-            file: file.to_string(),
-            message: e.to_string(),
-        })?;
+    pub fn parse(text: &str, file: &str) -> Result<Self, InputError> {
+        let case: CaseFile = parse_toml(text, file)?;
         case.check(file)?;
         Ok(case)
     }
 
     /// Reads a case file from disk.
-    pub fn read(path: &std::path::Path) -> Result<Self, CaseError> {
-        let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| CaseError::Io {
-            file: file.clone(),
-            source,
-        })?;
-        Self::parse(&text, &file)
+    pub fn read(path: &std::path::Path) -> Result<Self, InputError> {
+        Self::parse(&read_text(path)?, &path.display().to_string())
     }
 
-    fn check(&self, file: &str) -> Result<(), CaseError> {
-        let err = |field: &str, expected: &str| CaseError::Field {
-            file: file.into(),
-            field: field.into(),
-            expected: expected.into(),
-        };
+    fn check(&self, file: &str) -> Result<(), InputError> {
+        let err = |field: &str, expected: &str| InputError::field(file, field, expected);
         let d = self.dimension;
         if d != 2 {
             return Err(err(

@@ -7,23 +7,24 @@ pub mod cavity_probe;
 pub mod run;
 pub mod setup;
 
-pub use case_file::{CaseError, CaseFile};
+use crate::input_error::InputError;
+pub use case_file::CaseFile;
 
 /// Loads a case by built-in name or from a TOML file path.
-pub fn load(name_or_path: &str) -> Result<CaseFile, CaseError> {
+pub fn load(name_or_path: &str) -> Result<CaseFile, InputError> {
     if let Some(text) = builtin::builtin_text(name_or_path) {
         return CaseFile::parse(text, &format!("built-in case `{name_or_path}`"));
     }
     let path = std::path::Path::new(name_or_path);
     if !path.exists() {
-        return Err(CaseError::Field {
-            file: name_or_path.to_string(),
-            field: "CASE".into(),
-            expected: format!(
+        return Err(InputError::field(
+            name_or_path,
+            "CASE",
+            format!(
                 "a built-in case ({}) or an existing .toml file",
                 builtin::builtin_names().join(", ")
             ),
-        });
+        ));
     }
     CaseFile::read(path)
 }

@@ -3,24 +3,10 @@
 //! names the file, the field and what was expected. The fields and their defaults are documented in
 //! `docs/studies.md`.
 
+use crate::input_error::{parse_toml, read_text, InputError};
 use crate::twodt::scene::{auto_dx, estimated_hpj_over_d, TwoDtConfig, Until};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
-
-/// An error in a study file.
-#[derive(Debug, thiserror::Error)]
-pub enum StudyError {
-    #[error("{file}: cannot read")]
-    Io { file: String, source: std::io::Error },
-    #[error("{file}: {message}")]
-    Syntax { file: String, message: String },
-    #[error("{file}: field `{field}`: expected {expected}")]
-    Field {
-        file: String,
-        field: String,
-        expected: String,
-    },
-}
 
 /// The study file as written.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -219,25 +205,14 @@ impl Study {
     /// hull file is read here too (its own errors name it).
     pub fn read(path: &Path) -> anyhow::Result<Study> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| StudyError::Io {
-            file: file.clone(),
-            source,
-        })?;
-        let spec: StudyFile = toml::from_str(&text).map_err(|e| StudyError::Syntax {
-            file: file.clone(),
-            message: e.to_string(),
-        })?;
+        let spec: StudyFile = parse_toml(&read_text(path)?, &file)?;
         let base = path.parent().unwrap_or(Path::new("."));
         let hull_path = if spec.hull.is_absolute() {
             spec.hull.clone()
         } else {
             base.join(&spec.hull)
         };
-        let field = |field: &str, expected: String| StudyError::Field {
-            file: file.clone(),
-            field: field.into(),
-            expected,
-        };
+        let field = |field: &str, expected: String| InputError::field(&file, field, expected);
         if !hull_path.is_file() {
             return Err(field(
                 "hull",
