@@ -2,6 +2,7 @@
 //! nothing depends on system fonts. The image is rendered in memory, then written atomically.
 
 use super::atomic::write_atomic;
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
 use std::sync::Once;
@@ -179,43 +180,55 @@ fn encode_png(rgb: &[u8], w: u32, h: u32) -> anyhow::Result<Vec<u8>> {
 }
 
 /// Particles coloured by a value (blue → red over [vmin, vmax]) with optional wall polylines in black, on
-/// axes of equal scale over `range` (x0, x1, y0, y1); `width` pixels wide. Written as PNG.
+/// axes of equal scale over `range` (x0, x1, y0, y1) labelled `xlabel`, `ylabel`; `width` pixels wide, with
+/// a colour bar of [vmin, vmax] on the right when `bar` is given (its label). Written as PNG.
 #[allow(clippy::too_many_arguments)]
 pub fn scatter_plot(
     path: &Path,
     title: &str,
+    (xlabel, ylabel): (&str, &str),
     points: &[(f64, f64)],
     values: &[f64],
     (vmin, vmax): (f64, f64),
+    bar: Option<&str>,
     walls: &[Vec<(f64, f64)>],
     range: (f64, f64, f64, f64),
     width: u32,
 ) -> anyhow::Result<()> {
     register_font();
     let (x0, x1, y0, y1) = range;
-    let plot_w = width.saturating_sub(100).max(100) as f64;
-    let h = ((plot_w * (y1 - y0) / (x1 - x0)) as u32 + 110).clamp(200, 4000);
+    let bar_w = if bar.is_some() { 130 } else { 0 };
+    let plot_w = width.saturating_sub(110 + bar_w).max(100) as f64;
+    let h = ((plot_w * (y1 - y0) / (x1 - x0)) as u32 + 125).clamp(200, 4000);
     let mut buf = vec![0u8; (width * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buf, (width, h)).into_drawing_area();
         root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
+        let (main, side) = root.split_horizontally(width - bar_w);
+        let mut chart = ChartBuilder::on(&main)
             .caption(title, ("sans-serif", 20))
             .margin(10)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
+            .x_label_area_size(50)
+            .y_label_area_size(70)
             .build_cartesian_2d(x0..x1, y0..y1)?;
         chart
             .configure_mesh()
             .disable_mesh()
+            .x_desc(xlabel)
+            .y_desc(ylabel)
             .label_style(("sans-serif", 14))
+            .axis_desc_style(("sans-serif", 16))
             .draw()?;
+        if let Some(label) = bar {
+            colour_bar(&side, label, (vmin, vmax))?;
+        }
         let span = (vmax - vmin).max(1e-300);
         chart.draw_series(
             points
                 .iter()
                 .zip(values)
-                .filter(|(p, _)| p.0.is_finite() && p.1.is_finite())
+                // Points outside the window would be drawn on its edge: leave them out.
+                .filter(|(p, _)| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1)
                 .map(|(p, v)| {
                     let s = ((v - vmin) / span).clamp(0.0, 1.0);
                     Circle::new(*p, 1, colour_map(s).filled())
@@ -228,6 +241,38 @@ pub fn scatter_plot(
     }
     let img = encode_png(&buf, width, h)?;
     write_atomic(path, &img)?;
+    Ok(())
+}
+
+/// A vertical colour bar of [vmin, vmax] filling `area`, labelled `label`.
+fn colour_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    label: &str,
+    (vmin, vmax): (f64, f64),
+) -> anyhow::Result<()>
+where
+    DB::ErrorType: 'static,
+{
+    let span = (vmax - vmin).max(1e-300);
+    let mut cb = ChartBuilder::on(area)
+        .margin(10)
+        .margin_top(40)
+        .x_label_area_size(50)
+        .y_label_area_size(60)
+        .build_cartesian_2d(0.0..1.0, vmin..vmax)?;
+    cb.configure_mesh()
+        .disable_mesh()
+        .disable_x_axis()
+        .y_desc(label)
+        .label_style(("sans-serif", 13))
+        .axis_desc_style(("sans-serif", 14))
+        .draw()?;
+    let n = 100;
+    cb.draw_series((0..n).map(|k| {
+        let a = vmin + span * k as f64 / n as f64;
+        let b = vmin + span * (k + 1) as f64 / n as f64;
+        Rectangle::new([(0.0, a), (1.0, b)], colour_map((k as f64 + 0.5) / n as f64).filled())
+    }))?;
     Ok(())
 }
 
@@ -419,23 +464,7 @@ pub fn field_map(
                     )),
             )))?;
         }
-        let mut cb = ChartBuilder::on(&bar)
-            .margin(15)
-            .margin_top(40)
-            .x_label_area_size(45)
-            .y_label_area_size(80)
-            .build_cartesian_2d(0.0..1.0, vmin..vmax)?;
-        cb.configure_mesh()
-            .disable_mesh()
-            .disable_x_axis()
-            .label_style(("sans-serif", 13))
-            .draw()?;
-        let n = 100;
-        cb.draw_series((0..n).map(|k| {
-            let a = vmin + span * k as f64 / n as f64;
-            let b = vmin + span * (k + 1) as f64 / n as f64;
-            Rectangle::new([(0.0, a), (1.0, b)], colour_map((k as f64 + 0.5) / n as f64).filled())
-        }))?;
+        colour_bar(&bar, "", (vmin, vmax))?;
         root.present()?;
     }
     let img = encode_png(&buf, w, h)?;
@@ -627,4 +656,44 @@ pub fn label_grid(
     let img = encode_png(&buf, w, h)?;
     write_atomic(path, &img)?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Pixels of exactly the colour map's top colour (value 1) in a PNG.
+    fn red_pixels(path: &Path) -> usize {
+        let img = image::open(path).unwrap().to_rgb8();
+        img.pixels().filter(|p| p.0 == [210, 30, 30]).count()
+    }
+
+    /// Particles outside a snapshot's window were drawn on its edge (a coloured strip along the right side of
+    /// the plunge snapshots, from the particles beyond the window).
+    #[test]
+    fn particles_outside_the_window_are_not_drawn_on_its_edge() {
+        let dir = std::env::temp_dir().join(format!("bowwave-plot-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("scatter.png");
+        let draw = |points: &[(f64, f64)]| {
+            let values = vec![1.0; points.len()];
+            scatter_plot(
+                &path,
+                "t",
+                ("y", "z"),
+                points,
+                &values,
+                (0.0, 1.0),
+                None,
+                &[],
+                (0.0, 1.0, 0.0, 1.0),
+                400,
+            )
+            .unwrap();
+            red_pixels(&path)
+        };
+        assert!(draw(&[(0.5, 0.5)]) > 0, "a point inside the window is drawn");
+        assert_eq!(draw(&[(1.5, 0.5), (0.5, -2.0), (f64::NAN, 0.5)]), 0);
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

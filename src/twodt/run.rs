@@ -591,9 +591,11 @@ fn plunge_plots(scene: &Scene, s: &Snapshot, c: &cavity::Cavity, dir: &Path) -> 
     plot::scatter_plot(
         &dir.join("plunge_pressure.png"),
         "pressure p/(ρ g D) at the plunge",
+        ("y/L", "z/L"),
         &pts,
         &p,
         (0.0, 1.0),
+        Some("p/(ρ g D)"),
         std::slice::from_ref(&wall),
         range,
         1400,
@@ -629,9 +631,11 @@ fn depth_plot(
     plot::scatter_plot(
         path,
         title,
+        ("y/L", "z/L"),
         &pts,
         &marks,
         (0.0, 1.0),
+        None,
         std::slice::from_ref(&wall),
         range,
         1400,
