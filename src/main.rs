@@ -108,6 +108,15 @@ enum Command {
         /// keep folds high in a sheet out (docs/jet-metrics.md).
         #[arg(long)]
         plunge_depth: Option<f64>,
+        /// Plunge criterion 5: a closed air cavity counts as the plunge only if the circulation around it,
+        /// Γ/(U D), is at least this (clockwise positive, the sense of a jet overturning away from the hull);
+        /// it keeps out slivers of air between particle rows of the sheet climbing the hull, whose Γ is
+        /// near zero (docs/jet-metrics.md).
+        #[arg(long, default_value_t = 0.02)]
+        plunge_circulation: f64,
+        /// Switch plunge criterion 5 (--plunge-circulation) off.
+        #[arg(long)]
+        no_circulation_check: bool,
         /// x/L between outputs (series row, η profile, VTK frame).
         #[arg(long, default_value_t = 0.005)]
         output_dx: f64,
@@ -694,6 +703,8 @@ fn run() -> anyhow::Result<()> {
             c0,
             detect_every,
             plunge_depth,
+            plunge_circulation,
+            no_circulation_check,
             output_dx,
             out,
             vtk,
@@ -709,6 +720,9 @@ fn run() -> anyhow::Result<()> {
             let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
             if let Some(f) = plunge_depth.filter(|f| !(f.is_finite() && *f > 0.0)) {
                 anyhow::bail!("--plunge-depth {f}: expected a positive fraction of the crest height");
+            }
+            if !plunge_circulation.is_finite() {
+                anyhow::bail!("--plunge-circulation {plunge_circulation}: expected a finite Γ/(U D)");
             }
             let cfg = bowwave::twodt::scene::TwoDtConfig {
                 fr,
@@ -734,6 +748,7 @@ fn run() -> anyhow::Result<()> {
                 c0,
                 detect_every,
                 plunge_depth,
+                plunge_circulation: (!no_circulation_check).then_some(plunge_circulation),
                 output_dx,
                 x0,
                 settle_crossings: settle,

@@ -117,7 +117,7 @@ fn plunge_check(
     scene: &Scene,
     s: &Snapshot,
     t: f64,
-    plunge_depth: Option<f64>,
+    (plunge_depth, plunge_circulation): (Option<f64>, Option<f64>),
     watch: &mut cavity::ClosureWatch,
 ) -> Option<(PlungeMetrics, cavity::Cavity)> {
     let g = &scene.geom;
@@ -143,17 +143,23 @@ fn plunge_check(
             .fold(f64::NEG_INFINITY, f64::max)
             + 0.5 * g.dx_f
     };
-    // A plunge closes the cavity against the free surface in front of the wave: the cavity reaches down
-    // into the lower part of the wave. Loops folded within a thin sheet high on the crest are not plunges.
-    let (c, crest) = closed.into_iter().find_map(|c| {
-        let crest = crest_of(&c);
-        plunge_depth.is_none_or(|f| c.lo.y < f * crest).then_some((c, crest))
-    })?;
     let u = g.fr;
+    // Criterion 3 (optional): a plunge closes the cavity against the free surface in front of the wave, so
+    // the cavity reaches down into the lower part of the wave. Criterion 5: the jet closing it turns
+    // clockwise around it; a sliver of air between particle rows of a sheet has no such circulation.
+    let (c, crest, gamma) = closed.into_iter().find_map(|c| {
+        let crest = crest_of(&c);
+        if !plunge_depth.is_none_or(|f| c.lo.y < f * crest) {
+            return None;
+        }
+        let gamma = cavity::circulation(s, &ls, &c);
+        plunge_circulation
+            .is_none_or(|min| gamma / (u * g.draft) >= min)
+            .then_some((c, crest, gamma))
+    })?;
     let idx = jet::jet_particles(s, &ls, &c);
     let m = jet::metrics(s, &ls, &idx)?;
     let x = scene.profile.x_at(t);
-    let gamma = cavity::circulation(s, &ls, &c);
     let pm = PlungeMetrics {
         x_plunge_over_l: x,
         y_plunge_over_l: c.rightmost.x,
@@ -292,8 +298,13 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                 // The mean level of the far field (the top particles jitter by a tenth of a spacing).
                 let far = (mean_finite(&eta[far_from..]) - p.far_ref).abs();
                 p.far_eta = p.far_eta.max(far / g.draft);
-                if let Some((pm, c)) = plunge_check(&scene, &s, scene.sim.time, cfg.plunge_depth, &mut p.closure_watch)
-                {
+                if let Some((pm, c)) = plunge_check(
+                    &scene,
+                    &s,
+                    scene.sim.time,
+                    (cfg.plunge_depth, cfg.plunge_circulation),
+                    &mut p.closure_watch,
+                ) {
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;

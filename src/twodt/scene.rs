@@ -83,6 +83,13 @@ pub struct TwoDtConfig {
     /// 5e-4 (x/L 0.365 and 0.350, bottom at 0.55 of the crest) that the former default of 0.5 rejected,
     /// while the coarse runs detect nothing false without it (docs/twodt.md).
     pub plunge_depth: Option<f64>,
+    /// Criterion 5 of docs/jet-metrics.md: a closed cavity counts as the plunge only if the circulation
+    /// around it, Γ/(UD), is at least this (positive: clockwise, the sense of a jet overturning away from the
+    /// hull). Default `Some(0.02)`: the thesis (§10.1.3) has "a net circulation around this formed closed
+    /// cavity" at impact; the plunges we measured have 0.08–0.16, while the false ones (a top row peeling
+    /// off the sheet that climbs the hull, closing a sliver of air against it) have −0.011 and 0.002
+    /// (docs/twodt.md). `None`: off.
+    pub plunge_circulation: Option<f64>,
     /// x/L between outputs (series row, η(y) profile, VTK frame). Default 0.005.
     pub output_dx: f64,
     /// Density diffusion: δ-SPH (5.2) by default; standard WCSPH (none) or Molteni–Colagrossi (5.4) as method
@@ -130,6 +137,7 @@ impl Default for TwoDtConfig {
             settle_crossings: 1.0,
             detect_every: 10,
             plunge_depth: None,
+            plunge_circulation: Some(0.02),
             output_dx: 0.005,
             diffusion: Default::default(),
             kernel_table: true,
