@@ -304,3 +304,40 @@ fn sliver_between_layers_moving_together_has_no_circulation() {
         "Γ of the sliver {g_sliver} against {g_turning}"
     );
 }
+
+/// Between two regular plunge checks the run may check every step (the search for t_p): those checks all
+/// compare with the same earlier check and leave it in place, while a regular check moves it forward.
+#[test]
+fn checks_between_regular_ones_compare_with_the_same_earlier_check() {
+    let dx = 0.02;
+    let centre = V2::new(0.5, 0.3);
+    let hole = |p: &V2| (p - centre).norm() < 0.12;
+    let notch = |p: &V2| (p.x - centre.x).abs() < 0.12 && p.y > centre.y - 0.12;
+    let pool = |keep: &dyn Fn(&V2) -> bool| {
+        let pos = lattice(dx, V2::zeros(), V2::new(1.0, 0.5), |p| keep(p));
+        let s = snapshot(pos, Vec::new(), dx);
+        level_set::level_set(&s, V2::new(-0.1, -0.1), V2::new(1.1, 0.7), dx)
+    };
+    let (open, closed) = (pool(&|p| !notch(p)), pool(&|p| !hole(p)));
+    let mut watch = cavity::ClosureWatch::default();
+    assert!(
+        watch.closed_since_previous(&closed, 0.0, |_| true).is_none(),
+        "no earlier check yet"
+    );
+    assert!(
+        watch.newly_closed(&open, 0.0, |_| true).is_none(),
+        "the first regular check"
+    );
+    for _ in 0..2 {
+        let c = watch
+            .closed_since_previous(&closed, 0.0, |_| true)
+            .expect("an earlier check");
+        assert_eq!(c.len(), 1, "the notch closed into the hole since the regular check");
+    }
+    assert_eq!(watch.newly_closed(&closed, 0.0, |_| true).map(|c| c.len()), Some(1));
+    assert_eq!(
+        watch.newly_closed(&closed, 0.0, |_| true).map(|c| c.len()),
+        Some(0),
+        "closed already at the previous regular check"
+    );
+}

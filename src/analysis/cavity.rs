@@ -165,15 +165,28 @@ impl ClosureWatch {
     }
 
     /// The cavities closed since the previous call, in [`find_cavities`] order; `None` on the first call,
-    /// which has nothing to compare with.
+    /// which has nothing to compare with. `ls` becomes the previous check.
     pub fn newly_closed(&mut self, ls: &LevelSet, min_area: f64, keep: impl Fn(&[V2]) -> bool) -> Option<Vec<Cavity>> {
+        let closed = self.closed_since_previous(ls, min_area, keep);
+        self.previous = Some((ls.clone(), atmosphere_mask(ls)));
+        closed
+    }
+
+    /// The same without moving the previous check to `ls`: for checks between two regular ones (the
+    /// step-by-step search of a plunge instant), which all compare with the same earlier check.
+    pub fn closed_since_previous(
+        &self,
+        ls: &LevelSet,
+        min_area: f64,
+        keep: impl Fn(&[V2]) -> bool,
+    ) -> Option<Vec<Cavity>> {
+        let (pls, pmask) = self.previous.as_ref()?;
         let atmosphere = atmosphere_mask(ls);
         let cavities = find_cavities(ls, &atmosphere, min_area, keep);
-        let (pls, pmask) = self.previous.replace((ls.clone(), atmosphere))?;
         Some(
             cavities
                 .into_iter()
-                .filter(|c| trapped_fraction(ls, c, &pls, &pmask) >= TRAPPED_FRACTION)
+                .filter(|c| trapped_fraction(ls, c, pls, pmask) >= TRAPPED_FRACTION)
                 .collect(),
         )
     }

@@ -119,6 +119,7 @@ fn plunge_check(
     t: f64,
     (plunge_depth, plunge_circulation): (Option<f64>, Option<f64>),
     watch: &mut cavity::ClosureWatch,
+    between_checks: bool,
 ) -> Option<(PlungeMetrics, cavity::Cavity)> {
     let g = &scene.geom;
     let h = s.h;
@@ -133,7 +134,11 @@ fn plunge_check(
             (nearest_point(&walls, p) - p).norm() > margin && p.x < g.width - margin && p.y > -g.depth + margin
         })
     };
-    let closed = watch.newly_closed(&ls, (2.0 * h).powi(2), keep)?;
+    let closed = if between_checks {
+        watch.closed_since_previous(&ls, (2.0 * h).powi(2), keep)?
+    } else {
+        watch.newly_closed(&ls, (2.0 * h).powi(2), keep)?
+    };
     // Crest: the highest free-surface particle over the cavity or up to one cavity width before it.
     let crest_of = |c: &cavity::Cavity| {
         let y_from = c.lo.x - (c.hi.x - c.lo.x);
@@ -180,6 +185,42 @@ fn plunge_check(
         jet_particles: m.particles,
     };
     Some((pm, c))
+}
+
+/// The state of a run at a regular plunge check, kept until the next one: when that one finds a plunge, the
+/// run goes back here and checks every step to the plunge, so that t_p is known to one step without checking
+/// every step all along. Stepping is deterministic, so the steps run again are the same bits.
+struct Rewind {
+    fluid: crate::sph::particles::Fluid<2>,
+    time: f64,
+    steps: u64,
+    last_dt: f64,
+    wall_corrections: u64,
+    passage: checkpoint::Passage,
+}
+
+impl Rewind {
+    fn keep(scene: &Scene, p: &checkpoint::Passage) -> Self {
+        let sim = &scene.sim;
+        Rewind {
+            fluid: sim.fluid.clone(),
+            time: sim.time,
+            steps: sim.steps,
+            last_dt: sim.last_dt,
+            wall_corrections: sim.wall_corrections,
+            passage: p.clone(),
+        }
+    }
+
+    fn restore(self, scene: &mut Scene, p: &mut checkpoint::Passage) {
+        let sim = &mut scene.sim;
+        sim.fluid = self.fluid;
+        sim.time = self.time;
+        sim.steps = self.steps;
+        sim.last_dt = self.last_dt;
+        sim.wall_corrections = self.wall_corrections;
+        *p = self.passage;
+    }
 }
 
 /// The bins of η(y): their width (4 dx_f) and the first bin of the far field (y > 3W/4), where the calm level is
@@ -261,12 +302,22 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     let mut blowup = None;
     let mut last_save = Instant::now();
     let policy = &opts.checkpoint;
+    // The state at the last regular check ([`Rewind`]), and, while a plunge found at a regular check is
+    // searched again step by step from the check before, the step where it was found.
+    let mut rewind: Option<Rewind> = None;
+    let mut replay_until: Option<u64> = None;
     loop {
         let x = scene.profile.x_at(scene.sim.time);
-        // Checkpoints are taken here, at the top of an iteration, where a resumed run re-enters the loop.
-        let halt =
-            policy.halt_at_step == Some(scene.sim.steps) || policy.wall_limit.is_some_and(|w| clock.elapsed() >= w);
-        if halt || policy.every.is_some_and(|e| last_save.elapsed() >= e) {
+        if let Some(m) = replay_until.filter(|&m| scene.sim.steps > m) {
+            anyhow::bail!("the plunge found at step {m} was not found again stepping from the check before it");
+        }
+        // Checkpoints are taken here, at the top of an iteration, where a resumed run re-enters the loop; not
+        // while a plunge instant is searched step by step, which a checkpoint does not record.
+        let searching = replay_until.is_some();
+        let halt = !searching
+            && (policy.halt_at_step == Some(scene.sim.steps)
+                || policy.wall_limit.is_some_and(|w| clock.elapsed() >= w));
+        if halt || (!searching && policy.every.is_some_and(|e| last_save.elapsed() >= e)) {
             let wall = p.wall_before + clock.elapsed().as_secs_f64();
             let cpu = p.cpu_before + crate::bench::cpu_seconds() - cpu0;
             checkpoint::save(&ckpt_path, &fingerprint, &scene, &p, wall, cpu)?;
@@ -283,8 +334,10 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                 .into());
             }
         }
-        let detect = (scene.sim.steps - p.steps0) % cfg.detect_every.max(1) as u64 == 0;
+        let regular = (scene.sim.steps - p.steps0) % cfg.detect_every.max(1) as u64 == 0;
+        let detect = regular || searching;
         let output = x >= p.next_output;
+        let mut checked = false;
         if detect || output || x >= p.x_stop {
             let s = snapshot(&mut scene);
             let umax = s.vel.iter().map(|v| v.norm()).fold(0.0, f64::max);
@@ -295,16 +348,28 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
             p.max_mach = p.max_mach.max(mach);
             let eta = eta_profile(&s.pos, g.width, bin, g.dx_f);
             if p.plunge.is_none() {
+                checked = true;
                 // The mean level of the far field (the top particles jitter by a tenth of a spacing).
                 let far = (mean_finite(&eta[far_from..]) - p.far_ref).abs();
                 p.far_eta = p.far_eta.max(far / g.draft);
-                if let Some((pm, c)) = plunge_check(
+                let found = plunge_check(
                     &scene,
                     &s,
                     scene.sim.time,
                     (cfg.plunge_depth, cfg.plunge_circulation),
                     &mut p.closure_watch,
-                ) {
+                    searching,
+                );
+                if found.is_some() && !searching {
+                    if let Some(r) = rewind.take() {
+                        // t_p lies between the previous check and this one: go back and check every step.
+                        replay_until = Some(scene.sim.steps);
+                        r.restore(&mut scene, &mut p);
+                        continue;
+                    }
+                }
+                if let Some((pm, c)) = found {
+                    replay_until = None;
                     log::info!("plunge at x/L = {:.4}", pm.x_plunge_over_l);
                     if opts.plots {
                         plunge_plots(&scene, &s, &c, &opts.out_dir)?;
@@ -357,6 +422,11 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                 b.set_position((1000.0 * (x - g.x0) / (p.x_stop - g.x0)).clamp(0.0, 1000.0) as u64);
                 b.set_message(format!("{x:.4}"));
             }
+        }
+        // Every check that moved the closure watch (regular or at an output) is a point to come back to:
+        // the step-by-step search compares with the same earlier check as the check that found the plunge.
+        if checked && !searching && p.plunge.is_none() && cfg.detect_every > 1 {
+            rewind = Some(Rewind::keep(&scene, &p));
         }
         if x >= p.x_stop {
             break;
