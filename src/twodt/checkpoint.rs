@@ -26,9 +26,11 @@ pub struct CheckpointPolicy {
     pub every: Option<Duration>,
     /// Go on from the folder's checkpoint when there is one of the same configuration.
     pub resume: bool,
-    /// Save and stop once this session of the run has used this much wall time (a batch job's limit).
+    /// Save and stop once this session of the run has used this much wall time (a batch job's limit), at the
+    /// next plunge check (within `detect_every` steps).
     pub wall_limit: Option<Duration>,
-    /// Save and stop at the first loop iteration with this many time steps done (tests; jobs split by steps).
+    /// Save and stop at the first plunge check with at least this many time steps done (tests; jobs split by
+    /// steps).
     pub halt_at_step: Option<u64>,
 }
 

@@ -311,13 +311,17 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         if let Some(m) = replay_until.filter(|&m| scene.sim.steps > m) {
             anyhow::bail!("the plunge found at step {m} was not found again stepping from the check before it");
         }
-        // Checkpoints are taken here, at the top of an iteration, where a resumed run re-enters the loop; not
-        // while a plunge instant is searched step by step, which a checkpoint does not record.
         let searching = replay_until.is_some();
-        let halt = !searching
-            && (policy.halt_at_step == Some(scene.sim.steps)
+        let regular = (scene.sim.steps - p.steps0) % cfg.detect_every.max(1) as u64 == 0;
+        // Checkpoints are taken here, at the top of an iteration, where a resumed run re-enters the loop, and
+        // only before a regular check: the resumed run then keeps its first point to come back to ([`Rewind`],
+        // not in the checkpoint) at the same check as the uninterrupted run would; never while a plunge
+        // instant is searched step by step.
+        let may_save = regular && !searching;
+        let halt = may_save
+            && (policy.halt_at_step.is_some_and(|h| scene.sim.steps >= h)
                 || policy.wall_limit.is_some_and(|w| clock.elapsed() >= w));
-        if halt || (!searching && policy.every.is_some_and(|e| last_save.elapsed() >= e)) {
+        if halt || (may_save && policy.every.is_some_and(|e| last_save.elapsed() >= e)) {
             let wall = p.wall_before + clock.elapsed().as_secs_f64();
             let cpu = p.cpu_before + crate::bench::cpu_seconds() - cpu0;
             checkpoint::save(&ckpt_path, &fingerprint, &scene, &p, wall, cpu)?;
@@ -334,7 +338,6 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                 .into());
             }
         }
-        let regular = (scene.sim.steps - p.steps0) % cfg.detect_every.max(1) as u64 == 0;
         let detect = regular || searching;
         let output = x >= p.next_output;
         let mut checked = false;
