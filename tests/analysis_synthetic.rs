@@ -229,27 +229,30 @@ fn elliptic_cavity_of_minor_axis_2h_is_detected() {
     assert!(cavities[0].centroid.norm() < dx, "cavity at {:?}", cavities[0].centroid);
 }
 
+/// Level sets of a pool (dx 0.02) with a round hole of radius 0.12 in it, of the same pool full, and of the
+/// pool with a notch open to the air where the hole is.
+fn pools_with_a_hole() -> [level_set::LevelSet; 3] {
+    let dx = 0.02;
+    let centre = V2::new(0.5, 0.3);
+    let hole = |p: &V2| (p - centre).norm() < 0.12;
+    let notch = |p: &V2| (p.x - centre.x).abs() < 0.12 && p.y > centre.y - 0.12;
+    let pool = |keep: &dyn Fn(&V2) -> bool| {
+        let pos = lattice(dx, V2::zeros(), V2::new(1.0, 0.5), |p| keep(p));
+        let s = snapshot(pos, Vec::new(), dx);
+        level_set::level_set(&s, V2::new(-0.1, -0.1), V2::new(1.1, 0.7), dx)
+    };
+    [pool(&|p| !hole(p)), pool(&|_| true), pool(&|p| !notch(p))]
+}
+
 /// Regression: a run at dx/L = 1e-3 reported a "plunge" that was a hole opening inside a stretched sheet
 /// of particles. A plunge traps air that was atmosphere before; such a hole was fluid. Here the same
 /// cavity (a hole in a pool) is scored against an earlier state where it was fluid (fraction 0) and one
 /// where the pool was open above it, a notch reaching the atmosphere (fraction 1).
 #[test]
 fn hole_in_a_stretched_sheet_is_not_a_plunge() {
-    let dx = 0.02;
-    let centre = V2::new(0.5, 0.3);
-    let hole = |p: &V2| (p - centre).norm() < 0.12;
-    let notch = |p: &V2| (p.x - centre.x).abs() < 0.12 && p.y > centre.y - 0.12;
-    let box_ = (V2::new(-0.1, -0.1), V2::new(1.1, 0.7));
-    let pool = |keep: &dyn Fn(&V2) -> bool| {
-        let pos = lattice(dx, V2::zeros(), V2::new(1.0, 0.5), |p| keep(p));
-        let s = snapshot(pos, Vec::new(), dx);
-        level_set::level_set(&s, box_.0, box_.1, dx)
-    };
-    let now = pool(&|p| !hole(p));
+    let [now, full, open] = pools_with_a_hole();
     let cavities = cavity::find_cavities(&now, &cavity::atmosphere_mask(&now), 0.0, |_| true);
     assert_eq!(cavities.len(), 1);
-    let full = pool(&|_| true);
-    let open = pool(&|p| !notch(p));
     let f_full = cavity::trapped_fraction(&now, &cavities[0], &full, &cavity::atmosphere_mask(&full));
     let f_open = cavity::trapped_fraction(&now, &cavities[0], &open, &cavity::atmosphere_mask(&open));
     assert_eq!(f_full, 0.0);
@@ -309,16 +312,7 @@ fn sliver_between_layers_moving_together_has_no_circulation() {
 /// compare with the same earlier check and leave it in place, while a regular check moves it forward.
 #[test]
 fn checks_between_regular_ones_compare_with_the_same_earlier_check() {
-    let dx = 0.02;
-    let centre = V2::new(0.5, 0.3);
-    let hole = |p: &V2| (p - centre).norm() < 0.12;
-    let notch = |p: &V2| (p.x - centre.x).abs() < 0.12 && p.y > centre.y - 0.12;
-    let pool = |keep: &dyn Fn(&V2) -> bool| {
-        let pos = lattice(dx, V2::zeros(), V2::new(1.0, 0.5), |p| keep(p));
-        let s = snapshot(pos, Vec::new(), dx);
-        level_set::level_set(&s, V2::new(-0.1, -0.1), V2::new(1.1, 0.7), dx)
-    };
-    let (open, closed) = (pool(&|p| !notch(p)), pool(&|p| !hole(p)));
+    let [closed, _, open] = pools_with_a_hole();
     let mut watch = cavity::ClosureWatch::default();
     assert!(
         watch.closed_since_previous(&closed, 0.0, |_| true).is_none(),
