@@ -220,6 +220,18 @@ pub struct StageTimings {
     pub update: f64,
 }
 
+/// The evolving state of a simulation: the fluid particles and the clock. Every other field of a
+/// [`Simulation`] is configuration or is recomputed at each stage from these, so a run restored to a state
+/// steps on exactly as it did from it (checkpoints, the 2D+t search of a plunge instant).
+#[derive(Clone, Debug)]
+pub struct SimState<const D: usize> {
+    pub fluid: Fluid<D>,
+    pub time: f64,
+    pub steps: u64,
+    pub last_dt: f64,
+    pub wall_corrections: u64,
+}
+
 /// A running simulation.
 pub struct Simulation<const D: usize> {
     pub cfg: SolverConfig<D>,
@@ -274,6 +286,27 @@ impl<const D: usize> Simulation<D> {
         sim.place_ghosts(0.0);
         sim.ghosts_static = !sim.boundaries.iter().any(|b| b.moves());
         sim
+    }
+
+    /// What the next steps depend on (see [`SimState`]).
+    pub fn state(&self) -> SimState<D> {
+        SimState {
+            fluid: self.fluid.clone(),
+            time: self.time,
+            steps: self.steps,
+            last_dt: self.last_dt,
+            wall_corrections: self.wall_corrections,
+        }
+    }
+
+    /// Puts back a state taken with [`Simulation::state`] (or read from a checkpoint): the steps that follow
+    /// are the same bits as those that followed it.
+    pub fn set_state(&mut self, s: SimState<D>) {
+        self.fluid = s.fluid;
+        self.time = s.time;
+        self.steps = s.steps;
+        self.last_dt = s.last_dt;
+        self.wall_corrections = s.wall_corrections;
     }
 
     /// Number of fluid particles.

@@ -11,6 +11,7 @@ use crate::analysis::level_set::LevelSet;
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv_table::Table;
 use crate::sph::particles::Fluid;
+use crate::sph::solver::SimState;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -195,14 +196,20 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
     let n = c.array(path, "rho", None)?.len();
     let a = |name: &str| c.array(path, name, Some(n));
     let v2 = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(&x, &y)| Vector2::new(x, y)).collect();
-    scene.sim.fluid = Fluid {
-        pos: v2(a("pos_y")?, a("pos_z")?),
-        vel: v2(a("vel_v")?, a("vel_w")?),
-        rho: a("rho")?.to_vec(),
-        mass: a("mass")?.to_vec(),
-        id: a("id")?.iter().map(|&i| i as u32).collect(),
-        tag: a("tag")?.to_vec(),
-    };
+    scene.sim.set_state(SimState {
+        fluid: Fluid {
+            pos: v2(a("pos_y")?, a("pos_z")?),
+            vel: v2(a("vel_v")?, a("vel_w")?),
+            rho: a("rho")?.to_vec(),
+            mass: a("mass")?.to_vec(),
+            id: a("id")?.iter().map(|&i| i as u32).collect(),
+            tag: a("tag")?.to_vec(),
+        },
+        time: h.time,
+        steps: h.steps,
+        last_dt: h.last_dt,
+        wall_corrections: h.wall_corrections,
+    });
     scene.initial_depth = c.array(path, "initial_depth", None)?.to_vec();
     scene.initial_row = c
         .array(path, "initial_row", None)?
@@ -210,10 +217,6 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
         .map(|&r| r as usize)
         .collect();
     scene.packing = h.packing;
-    scene.sim.time = h.time;
-    scene.sim.steps = h.steps;
-    scene.sim.last_dt = h.last_dt;
-    scene.sim.wall_corrections = h.wall_corrections;
     let table = |name: &str| -> anyhow::Result<Option<Table>> {
         let Some((_, columns)) = h.tables.iter().find(|(t, _)| t == name) else {
             return Ok(None);

@@ -188,37 +188,24 @@ fn plunge_check(
 }
 
 /// The state of a run at a plunge check (regular or at an output), kept until the next one: when that one
-/// finds a plunge, the run goes back here and checks every step to the plunge, so that t_p is known to one step without checking
-/// every step all along. Stepping is deterministic, so the steps run again are the same bits.
+/// finds a plunge, the run goes back here and checks every step to the plunge, so that t_p is known to one
+/// step without checking every step all along. Stepping is deterministic, so the steps run again are the
+/// same bits.
 struct Rewind {
-    fluid: crate::sph::particles::Fluid<2>,
-    time: f64,
-    steps: u64,
-    last_dt: f64,
-    wall_corrections: u64,
+    sim: crate::sph::solver::SimState<2>,
     passage: checkpoint::Passage,
 }
 
 impl Rewind {
     fn keep(scene: &Scene, p: &checkpoint::Passage) -> Self {
-        let sim = &scene.sim;
         Rewind {
-            fluid: sim.fluid.clone(),
-            time: sim.time,
-            steps: sim.steps,
-            last_dt: sim.last_dt,
-            wall_corrections: sim.wall_corrections,
+            sim: scene.sim.state(),
             passage: p.clone(),
         }
     }
 
     fn restore(self, scene: &mut Scene, p: &mut checkpoint::Passage) {
-        let sim = &mut scene.sim;
-        sim.fluid = self.fluid;
-        sim.time = self.time;
-        sim.steps = self.steps;
-        sim.last_dt = self.last_dt;
-        sim.wall_corrections = self.wall_corrections;
+        scene.sim.set_state(self.sim);
         *p = self.passage;
     }
 }
