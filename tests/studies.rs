@@ -129,6 +129,55 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
     assert!(runner::collect_finished(&changed, &out).is_empty());
 }
 
+/// A convergence study: one Froude number at two spacings. Regression: the comparison paired each published
+/// row with the first case at its Froude number, so the finer case had no comparison rows, and the report
+/// tested the published trends over Fr on cases that all have the same Fr.
+#[test]
+fn one_froude_number_at_two_spacings_compares_both_and_claims_no_trend() {
+    let dir = std::env::temp_dir().join("bowwave-study-convergence");
+    let _ = std::fs::remove_dir_all(&dir);
+    let path = write_study(
+        &dir,
+        "conv",
+        "froude = [0.55, 0.55]\n[resolution]\ndx = [3e-3, 2.5e-3]\n[stop]\nuntil = 0.04\n",
+    );
+    let study = Study::read(&path).unwrap();
+    let out = dir.join("out");
+    let opts = runner::StudyOptions {
+        out_dir: out.clone(),
+        force: false,
+        case: None,
+        jobs: 1,
+        threads: 1,
+        progress: false,
+        checkpoint: Default::default(),
+    };
+    assert_eq!(runner::run_cases(&study, &opts).unwrap(), 2, "two cases, two folders");
+    assert_eq!(collect_all(&study, &out).unwrap(), 2);
+    let comparison = std::fs::read_to_string(out.join("comparison.csv")).unwrap();
+    assert_eq!(
+        comparison.lines().count(),
+        1 + 6,
+        "three quantities for each case:\n{comparison}"
+    );
+    for dx in ["3.000e-3", "2.500e-3"] {
+        assert_eq!(
+            comparison.lines().filter(|l| l.split(',').any(|c| c == dx)).count(),
+            3,
+            "rows of the case at dx/L {dx}:\n{comparison}"
+        );
+    }
+    // The published trends run over Froude numbers: even with both cases plunging (metrics put in by hand,
+    // these short runs stop before the plunge) there is nothing to check at one Froude number.
+    let mut records = runner::collect_finished(&study, &out);
+    for r in &mut records {
+        r.result.plunge = Some(Default::default());
+    }
+    let trends = bowwave::studies::collect::trends(&records);
+    assert_eq!(trends.len(), 1, "{trends:?}");
+    assert!(trends[0].contains("2 plunging case(s) at 1 Froude number(s)") && trends[0].contains("cannot be checked"));
+}
+
 /// Regression: after the packing became the default (r = 1.5), `study --dry-run` built and packed every scene,
 /// which at the published Athena resolutions ran for over 20 minutes before printing anything. The dry run now
 /// builds unpacked scenes; the packing never changes the particle count, so the estimate is the same.

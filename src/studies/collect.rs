@@ -29,16 +29,16 @@ impl Comparison {
     }
 }
 
-/// The published jets of `hull` (by name, e.g. "athena") at the study's Froude numbers.
-pub fn published_for<'a>(hull: &str, recs: &'a [CaseRecord]) -> Vec<(PublishedJet, Option<&'a CaseRecord>)> {
-    published_jets()
-        .into_iter()
-        .filter(|p| p.hull == hull)
-        .map(|p| {
-            let ours = recs.iter().find(|r| (r.spec.fr - p.fr).abs() < 1e-9);
-            (p, ours)
+/// Every finished case that has a published jet of `hull` (by name, e.g. "athena") at its Froude number,
+/// with that jet, in the order of the cases: a study that runs one Froude number at several spacings (a
+/// convergence study) compares each of them.
+pub fn published_for<'a>(hull: &str, recs: &'a [CaseRecord]) -> Vec<(PublishedJet, &'a CaseRecord)> {
+    let published: Vec<PublishedJet> = published_jets().into_iter().filter(|p| p.hull == hull).collect();
+    recs.iter()
+        .filter_map(|r| {
+            let p = published.iter().find(|p| (r.spec.fr - p.fr).abs() < 1e-9)?;
+            Some((p.clone(), r))
         })
-        .filter(|(_, ours)| ours.is_some())
         .collect()
 }
 
@@ -47,7 +47,6 @@ pub fn published_for<'a>(hull: &str, recs: &'a [CaseRecord]) -> Vec<(PublishedJe
 pub fn comparisons(hull: &str, recs: &[CaseRecord]) -> Vec<Comparison> {
     let mut out = vec![];
     for (p, rec) in published_for(hull, recs) {
-        let rec = rec.expect("filtered");
         let r = &rec.result;
         let note = match (&r.plunge, &r.blowup) {
             (Some(_), _) => String::new(),
@@ -204,17 +203,22 @@ pub fn report(
 }
 
 /// The trends the thesis reports (§10.1.3), each stated with our numbers: holds, does not hold, or cannot
-/// be checked (fewer than two plunging cases).
+/// be checked (plunging cases at fewer than two Froude numbers, as in a convergence study of one).
 pub fn trends(recs: &[CaseRecord]) -> Vec<String> {
     let plunged: Vec<_> = recs
         .iter()
         .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, m)))
         .collect();
-    if plunged.len() < 2 {
+    let mut froude: Vec<f64> = plunged.iter().map(|p| p.0).collect();
+    froude.sort_by(f64::total_cmp);
+    froude.dedup();
+    if froude.len() < 2 {
         return vec![format!(
-            "{} plunging case(s): the trends of the thesis (x_plunge and y_plunge grow with Fr, Γ/(UD) grows up to \
-             Fr ≈ 0.5 then falls, I_OG/S² falls with Fr, α_G rises from about 40° to 55°) cannot be checked",
-            plunged.len()
+            "{} plunging case(s) at {} Froude number(s): the trends of the thesis (x_plunge and y_plunge grow with \
+             Fr, Γ/(UD) grows up to Fr ≈ 0.5 then falls, I_OG/S² falls with Fr, α_G rises from about 40° to 55°) \
+             cannot be checked",
+            plunged.len(),
+            froude.len()
         )];
     }
     let series = |f: &dyn Fn(&crate::twodt::run::PlungeMetrics) -> f64| -> Vec<f64> {
