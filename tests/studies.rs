@@ -17,6 +17,19 @@ fn write_study(dir: &Path, name: &str, body: &str) -> PathBuf {
     path
 }
 
+/// Options of a test run: every case, one job on one thread, no progress bars, the default checkpoints.
+fn serial_options(out: &Path) -> runner::StudyOptions {
+    runner::StudyOptions {
+        out_dir: out.to_path_buf(),
+        force: false,
+        case: None,
+        jobs: 1,
+        threads: 1,
+        progress: false,
+        checkpoint: Default::default(),
+    }
+}
+
 fn error_of(dir: &Path, body: &str) -> String {
     let path = write_study(dir, "bad", body);
     format!(
@@ -75,13 +88,8 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
     let study = Study::read(&path).unwrap();
     let out = dir.join("out");
     let opts = runner::StudyOptions {
-        out_dir: out.clone(),
-        force: false,
         case: Some(2),
-        jobs: 1,
-        threads: 1,
-        progress: false,
-        checkpoint: Default::default(),
+        ..serial_options(&out)
     };
     assert_eq!(
         runner::run_cases(&study, &opts).unwrap(),
@@ -143,15 +151,7 @@ fn one_froude_number_at_two_spacings_compares_both_and_claims_no_trend() {
     );
     let study = Study::read(&path).unwrap();
     let out = dir.join("out");
-    let opts = runner::StudyOptions {
-        out_dir: out.clone(),
-        force: false,
-        case: None,
-        jobs: 1,
-        threads: 1,
-        progress: false,
-        checkpoint: Default::default(),
-    };
+    let opts = serial_options(&out);
     assert_eq!(runner::run_cases(&study, &opts).unwrap(), 2, "two cases, two folders");
     assert_eq!(collect_all(&study, &out).unwrap(), 2);
     let comparison = std::fs::read_to_string(out.join("comparison.csv")).unwrap();
@@ -214,16 +214,11 @@ fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
     );
     let study = Study::read(&path).unwrap();
     let options = |out: &Path, halt: Option<u64>| runner::StudyOptions {
-        out_dir: out.to_path_buf(),
-        force: false,
-        case: None,
-        jobs: 1,
-        threads: 1,
-        progress: false,
         checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
             halt_at_step: halt,
             ..Default::default()
         },
+        ..serial_options(out)
     };
     let (through, stopped) = (dir.join("through"), dir.join("stopped"));
     assert_eq!(runner::run_cases(&study, &options(&through, None)).unwrap(), 1);
