@@ -256,3 +256,18 @@ fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
     assert_eq!(comparison(&through), comparison(&stopped));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Every shipped study file, the README's main job among them, reads and resolves to cases.
+#[test]
+fn shipped_study_files_read() {
+    let mut names = vec![];
+    for entry in std::fs::read_dir("studies").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let study = Study::read(&path).unwrap_or_else(|e| panic!("{}: {e:#}", path.display()));
+            assert!(!study.cases.is_empty(), "{}", path.display());
+            names.push(path.file_name().unwrap().to_string_lossy().into_owned());
+        }
+    }
+    assert!(names.iter().any(|n| n == "quick.toml"), "{names:?}");
+}
