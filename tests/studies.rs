@@ -17,6 +17,14 @@ fn write_study(dir: &Path, name: &str, body: &str) -> PathBuf {
     path
 }
 
+/// A study file written afresh in an emptied temporary folder `bowwave-study-TAG`, read back; with that folder.
+fn fresh_study(tag: &str, body: &str) -> (Study, PathBuf) {
+    let dir = std::env::temp_dir().join(format!("bowwave-study-{tag}"));
+    let _ = std::fs::remove_dir_all(&dir);
+    let study = Study::read(&write_study(&dir, tag, body)).unwrap();
+    (study, dir)
+}
+
 /// Options of a test run: every case, one job on one thread, no progress bars, the default checkpoints.
 fn serial_options(out: &Path) -> runner::StudyOptions {
     runner::StudyOptions {
@@ -78,14 +86,10 @@ fn bad_study_files_name_the_file_and_the_field() {
 /// finished case was run again and left out of the tables (`float_roundtrip` feature).
 #[test]
 fn finished_cases_are_skipped_on_rerun_and_collected() {
-    let dir = std::env::temp_dir().join("bowwave-study-resume");
-    let _ = std::fs::remove_dir_all(&dir);
-    let path = write_study(
-        &dir,
-        "tiny",
+    let (study, dir) = fresh_study(
+        "resume",
         "froude = [0.55, 0.64]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = 0.04\n",
     );
-    let study = Study::read(&path).unwrap();
     let out = dir.join("out");
     let opts = runner::StudyOptions {
         case: Some(2),
@@ -142,14 +146,10 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
 /// tested the published trends over Fr on cases that all have the same Fr.
 #[test]
 fn one_froude_number_at_two_spacings_compares_both_and_claims_no_trend() {
-    let dir = std::env::temp_dir().join("bowwave-study-convergence");
-    let _ = std::fs::remove_dir_all(&dir);
-    let path = write_study(
-        &dir,
-        "conv",
+    let (study, dir) = fresh_study(
+        "convergence",
         "froude = [0.55, 0.55]\n[resolution]\ndx = [3e-3, 2.5e-3]\n[stop]\nuntil = 0.04\n",
     );
-    let study = Study::read(&path).unwrap();
     let out = dir.join("out");
     let opts = serial_options(&out);
     assert_eq!(runner::run_cases(&study, &opts).unwrap(), 2, "two cases, two folders");
@@ -205,14 +205,10 @@ fn dry_run_does_not_pack_the_scenes() {
 /// comparison.csv are identical.
 #[test]
 fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
-    let dir = std::env::temp_dir().join(format!("bowwave-study-killed-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    let path = write_study(
-        &dir,
-        "killed",
+    let (study, dir) = fresh_study(
+        &format!("killed-{}", std::process::id()),
         "froude = [0.64]\n[resolution]\ndx = [4e-3]\n[stop]\nuntil = 0.05\n",
     );
-    let study = Study::read(&path).unwrap();
     let options = |out: &Path, halt: Option<u64>| runner::StudyOptions {
         checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
             halt_at_step: halt,
