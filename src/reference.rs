@@ -18,6 +18,14 @@ const FILES: &[(&str, &str)] = &[
         include_str!("../data/reference/martin_moyce_1952_n2_2_a2.25in_front_table2_ocellaris.csv"),
     ),
     (
+        "martin_moyce_height",
+        include_str!("../data/reference/martin_moyce_1952_n2_2_a2.25in_residual_height_table6_ocellaris.csv"),
+    ),
+    (
+        "koshizuka_oka_front",
+        include_str!("../data/reference/koshizuka_oka_1996_front_pysph.csv"),
+    ),
+    (
         "marrone_p1",
         include_str!("../data/reference/marrone2011_deltaSPH_damBreak_P1_trixiparticles.csv"),
     ),

@@ -64,6 +64,21 @@ fn oscillating_drop_follows_the_ode_for_two_periods() {
     assert!(c[1].value < 0.0, "mechanical energy grew: {}", c[1].value);
 }
 
+/// The Martin–Moyce column's residual height at the back wall follows their Table 6 within one marker
+/// spacing (1/18 of the column height). Measured: max 0.019 (a/dx 25), 0.020 (50). The front of the same
+/// run misses the 10 % (see docs/method.md), so only its error is required to be computed here.
+#[test]
+fn martin_moyce_column_height_follows_table_6() {
+    let r = run_case("dam-break-mm", 25.0, None);
+    let checks = validation::martin_moyce(&r);
+    let (height, front): (Vec<Check>, Vec<Check>) = checks
+        .into_iter()
+        .partition(|c| c.quantity.starts_with("column height"));
+    assert_eq!(height.len(), 2);
+    assert_checks(&height);
+    assert!(front.iter().all(|c| c.error.is_finite()), "front errors not computed");
+}
+
 #[test]
 fn impact_time_measure_reads_the_published_curves() {
     // The first-impact measure used by `bowwave validate` (first crossing of p/(ρgH) = 0.1), applied to the
