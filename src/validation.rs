@@ -4,6 +4,7 @@
 
 use crate::cases::{
     self,
+    case_file::BlockSpec,
     run::{run, RunOptions, RunResult},
     CaseFile,
 };
@@ -55,6 +56,7 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "oscillating-drop" => Some(40.0),
         "dam-break-mm" => Some(50.0),
         "dam-break" => Some(80.0),
+        "jet-wall" => Some(20.0),
         _ => None,
     }
 }
@@ -417,6 +419,88 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
     out
 }
 
+/// Start of the steady window of the `jet-wall` case (s): after the tapered front has split and the run-up
+/// left the sensors (about 8 h/U after the first contact at 0.05 s).
+pub const JET_WALL_STEADY_FROM: f64 = 0.4;
+
+/// Wall pressure coefficient Cp = 1 − r² of a plane jet of full width `h` meeting a wall at right angles, at
+/// distance `y` from the stagnation point: the free-streamline solution (data/reference/README.md §6,
+/// x(r) = (h/π)[ln((1+r)/(1−r)) + 2 atan r]) inverted by bisection.
+pub fn taylor_jet_cp(y: f64, h: f64) -> f64 {
+    let x = |r: f64| h / std::f64::consts::PI * (((1.0 + r) / (1.0 - r)).ln() + 2.0 * r.atan());
+    let (mut lo, mut hi) = (0.0, 1.0 - 1e-15);
+    for _ in 0..100 {
+        let m = 0.5 * (lo + hi);
+        if x(m) < y.abs() {
+            lo = m;
+        } else {
+            hi = m;
+        }
+    }
+    1.0 - lo * lo
+}
+
+/// Jet on a wall: the mean wall force over the steady window within 2 % of ρU²b (the momentum theorem; the
+/// mean of a signal that the slug's sound waves still stir by about 1 %), and, reported, the sensors'
+/// mean Cp against Taylor's free-streamline solution away from the corner (y/h ≥ 0.3) and at it (y/h 0.025).
+pub fn jet_wall(r: &RunResult) -> Vec<Check> {
+    let b = r.case.scales.length;
+    let u = r
+        .case
+        .blocks
+        .iter()
+        .find_map(|bl| match bl {
+            BlockSpec::Rectangle { velocity: Some(v), .. } => Some(v[0]),
+            _ => None,
+        })
+        .unwrap_or(f64::NAN);
+    let q = 0.5 * r.case.fluid.rho0 * u * u;
+    let t = col(r, "t");
+    let steady: Vec<usize> = (0..t.len()).filter(|&k| t[k] >= JET_WALL_STEADY_FROM).collect();
+    let mean = |v: &[f64]| steady.iter().map(|&k| v[k]).sum::<f64>() / steady.len().max(1) as f64;
+    let force = mean(&col(r, "fx_tank"));
+    let force_ref = 2.0 * q * b;
+    let (mut far, mut corner) = ((0.0, 0.0, 0.0), (f64::NAN, f64::NAN, f64::NAN));
+    for p in &r.case.probes.pressure {
+        let y_over_h = p.position[1] / (2.0 * b);
+        let cp = mean(&col(r, &format!("p_{}", p.name))) / q;
+        let cp_ref = taylor_jet_cp(p.position[1], 2.0 * b);
+        let e = (cp - cp_ref).abs();
+        if y_over_h >= 0.3 && e >= far.0 {
+            far = (e, cp, cp_ref);
+        }
+        if corner.0.is_nan() {
+            corner = (e, cp, cp_ref);
+        }
+    }
+    vec![
+        check(
+            r,
+            "wall force / (rho U^2 b), mean over the steady window, rel. error",
+            force / force_ref,
+            1.0,
+            (force / force_ref - 1.0).abs(),
+            Some(0.02),
+        ),
+        check(
+            r,
+            "wall Cp at y/h >= 0.3 vs Taylor, max abs. error",
+            far.1,
+            far.2,
+            far.0,
+            None,
+        ),
+        check(
+            r,
+            "wall Cp at the corner sensor (y/h 0.025) vs Taylor",
+            corner.1,
+            corner.2,
+            corner.0,
+            None,
+        ),
+    ]
+}
+
 /// The checks of a built-in case, if it has any.
 pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
     Some(match r.case.name.as_str() {
@@ -425,6 +509,7 @@ pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
         "oscillating-drop" => oscillating_drop(r),
         "dam-break-mm" => martin_moyce(r),
         "dam-break" => dam_break(r),
+        "jet-wall" => jet_wall(r),
         _ => return None,
     })
 }
@@ -501,6 +586,48 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
                 )?;
                 files.push(p);
             }
+        }
+        "jet-wall" => {
+            // Mean Cp of each sensor over the steady window, and Taylor's curve.
+            let b = r.case.scales.length;
+            let q = 0.5 * r.case.fluid.rho0;
+            let t = col(r, "t");
+            let mut sph = vec![];
+            for pr in &r.case.probes.pressure {
+                let v = col(r, &format!("p_{}", pr.name));
+                let w: Vec<f64> = (0..t.len())
+                    .filter(|&k| t[k] >= JET_WALL_STEADY_FROM)
+                    .map(|k| v[k])
+                    .collect();
+                let cp = w.iter().sum::<f64>() / w.len().max(1) as f64 / q;
+                sph.push((pr.position[1] / (2.0 * b), cp));
+            }
+            let theory: Vec<(f64, f64)> = (0..=160)
+                .map(|k| {
+                    let y_over_h = k as f64 * 0.01;
+                    (y_over_h, taylor_jet_cp(y_over_h * 2.0 * b, 2.0 * b))
+                })
+                .collect();
+            let p = dir.join("jet-wall_cp.png");
+            line_plot(
+                &p,
+                "Plane jet on a wall: pressure along the wall (U = 1 m/s)",
+                "y / h (h: full jet width)",
+                "Cp = p / (rho U^2 / 2)",
+                &[
+                    Series {
+                        name: "bowwave, mean over t >= 0.4 s".into(),
+                        points: sph,
+                        style: Style::Markers,
+                    },
+                    Series {
+                        name: "free-streamline solution (Taylor 1966)".into(),
+                        points: theory,
+                        style: Style::Line,
+                    },
+                ],
+            )?;
+            files.push(p);
         }
         "dam-break-mm" => {
             let rt = reference::load("martin_moyce_front");

@@ -7,6 +7,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("dam-break-mm", include_str!("../../cases/dam-break-mm.toml")),
     ("elliptic-drop", include_str!("../../cases/elliptic-drop.toml")),
     ("oscillating-drop", include_str!("../../cases/oscillating-drop.toml")),
+    ("jet-wall", include_str!("../../cases/jet-wall.toml")),
 ];
 
 /// The TOML text of a built-in case.
