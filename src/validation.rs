@@ -225,6 +225,12 @@ fn errors_at_reference_times(
 /// (T = 3.4, i.e. τ = t√(g/a) = 2.40).
 const MM_HEIGHT_TAU_MAX: f64 = 2.3;
 
+/// The Martin–Moyce column height h/(n²a) = h/(2a) over the run, from the `column` gauge.
+fn mm_column_height(r: &RunResult) -> Vec<f64> {
+    let two_a = 2.0 * r.case.scales.length;
+    col(r, "eta_column").iter().map(|e| e / two_a).collect()
+}
+
 /// Martin–Moyce (n² = 2): the surge front |x − x_exp|/x_exp ≤ 10 % at every T ≤ 2.5, T = √2 t √(g/a)
 /// (the tolerance); the residual column height h/(2a) against their Table 6 within 1/18, the spacing
 /// of the markers it was read from (their values are multiples of 1/18 ≈ 0.056); and, reported only, the
@@ -240,8 +246,7 @@ pub fn martin_moyce(r: &RunResult) -> Vec<Check> {
     let (ko_front, ko_mean) =
         errors_at_reference_times(&big_t, &fs, &reference::col(&ko, 0), &reference::col(&ko, 1), 2.5, true);
     let hr = reference::load("martin_moyce_height");
-    let two_a = 2.0 * r.case.scales.length;
-    let h: Vec<f64> = col(r, "eta_column").iter().map(|e| e / two_a).collect();
+    let h = mm_column_height(r);
     let (height, height_mean) = errors_at_reference_times(
         &ts,
         &h,
@@ -440,10 +445,9 @@ pub fn taylor_jet_cp(y: f64, h: f64) -> f64 {
     1.0 - lo * lo
 }
 
-/// Jet on a wall: the mean wall force over the steady window within 2 % of ρU²b (the momentum theorem; the
-/// mean of a signal that the slug's sound waves still stir by about 1 %), and, reported, the sensors'
-/// mean Cp against Taylor's free-streamline solution away from the corner (y/h ≥ 0.3) and at it (y/h 0.025).
-pub fn jet_wall(r: &RunResult) -> Vec<Check> {
+/// Means over the steady window of the `jet-wall` run: the wall force, its momentum-theorem value ρU²b (U
+/// from the case's moving block), and for each sensor (y/h, Cp, Taylor's Cp).
+fn jet_wall_means(r: &RunResult) -> (f64, f64, Vec<(f64, f64, f64)>) {
     let b = r.case.scales.length;
     let u = r
         .case
@@ -458,13 +462,27 @@ pub fn jet_wall(r: &RunResult) -> Vec<Check> {
     let t = col(r, "t");
     let steady: Vec<usize> = (0..t.len()).filter(|&k| t[k] >= JET_WALL_STEADY_FROM).collect();
     let mean = |v: &[f64]| steady.iter().map(|&k| v[k]).sum::<f64>() / steady.len().max(1) as f64;
-    let force = mean(&col(r, "fx_tank"));
-    let force_ref = 2.0 * q * b;
+    let sensors = r
+        .case
+        .probes
+        .pressure
+        .iter()
+        .map(|p| {
+            let y = p.position[1];
+            let cp = mean(&col(r, &format!("p_{}", p.name))) / q;
+            (y / (2.0 * b), cp, taylor_jet_cp(y, 2.0 * b))
+        })
+        .collect();
+    (mean(&col(r, "fx_tank")), 2.0 * q * b, sensors)
+}
+
+/// Jet on a wall: the mean wall force over the steady window within 2 % of ρU²b (the momentum theorem; the
+/// mean of a signal that the slug's sound waves still stir by about 1 %), and, reported, the sensors'
+/// mean Cp against Taylor's free-streamline solution away from the corner (y/h ≥ 0.3) and at it (y/h 0.025).
+pub fn jet_wall(r: &RunResult) -> Vec<Check> {
+    let (force, force_ref, sensors) = jet_wall_means(r);
     let (mut far, mut corner) = ((0.0, 0.0, 0.0), (f64::NAN, f64::NAN, f64::NAN));
-    for p in &r.case.probes.pressure {
-        let y_over_h = p.position[1] / (2.0 * b);
-        let cp = mean(&col(r, &format!("p_{}", p.name))) / q;
-        let cp_ref = taylor_jet_cp(p.position[1], 2.0 * b);
+    for &(y_over_h, cp, cp_ref) in &sensors {
         let e = (cp - cp_ref).abs();
         if y_over_h >= 0.3 && e >= far.0 {
             far = (e, cp, cp_ref);
@@ -590,18 +608,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
         "jet-wall" => {
             // Mean Cp of each sensor over the steady window, and Taylor's curve.
             let b = r.case.scales.length;
-            let q = 0.5 * r.case.fluid.rho0;
-            let t = col(r, "t");
-            let mut sph = vec![];
-            for pr in &r.case.probes.pressure {
-                let v = col(r, &format!("p_{}", pr.name));
-                let w: Vec<f64> = (0..t.len())
-                    .filter(|&k| t[k] >= JET_WALL_STEADY_FROM)
-                    .map(|k| v[k])
-                    .collect();
-                let cp = w.iter().sum::<f64>() / w.len().max(1) as f64 / q;
-                sph.push((pr.position[1] / (2.0 * b), cp));
-            }
+            let sph: Vec<(f64, f64)> = jet_wall_means(r).2.iter().map(|&(y, cp, _)| (y, cp)).collect();
             let theory: Vec<(f64, f64)> = (0..=160)
                 .map(|k| {
                     let y_over_h = k as f64 * 0.01;
@@ -659,8 +666,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
             )?;
             files.push(p);
             let hr = reference::load("martin_moyce_height");
-            let two_a = 2.0 * r.case.scales.length;
-            let h: Vec<f64> = col(r, "eta_column").iter().map(|e| e / two_a).collect();
+            let h = mm_column_height(r);
             let p = dir.join("dam-break-mm_column_height.png");
             line_plot(
                 &p,
