@@ -194,7 +194,9 @@ pub fn oscillating_drop(r: &RunResult) -> Vec<Check> {
 }
 
 /// Worst (error, ours, reference) and mean of |z(t) − z_ref|/z_ref over the reference times t ≤ `t_max`
-/// (`relative`), or of |z(t) − z_ref| (absolute). Reference times outside the run give NaN.
+/// (`relative`), or of |z(t) − z_ref| (absolute), with our series interpolated at the reference's sparse
+/// times (`worst_relative_error` goes the other way, for dense references). Reference times outside the
+/// run give NaN.
 fn errors_at_reference_times(
     t: &[f64],
     z: &[f64],
@@ -221,8 +223,8 @@ fn errors_at_reference_times(
     (worst, sum / n.max(1) as f64)
 }
 
-/// Largest reference time of the residual-height comparison: the last Table 6 point inside the run
-/// (T = 3.4, i.e. τ = t√(g/a) = 2.40).
+/// Largest reference time τ = t√(g/a) of the residual-height comparison. The run ends at T = 3.4 (τ = 2.40):
+/// Table 6's last point inside it is τ = 2.21, the next (2.45) is past the end.
 const MM_HEIGHT_TAU_MAX: f64 = 2.3;
 
 /// The Martin–Moyce column height h/(n²a) = h/(2a) over the run, from the `column` gauge.
