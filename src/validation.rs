@@ -483,16 +483,20 @@ fn jet_wall_means(r: &RunResult) -> (f64, f64, Vec<(f64, f64, f64)>) {
 /// mean Cp against Taylor's free-streamline solution away from the corner (y/h ≥ 0.3) and at it (y/h 0.025).
 pub fn jet_wall(r: &RunResult) -> Vec<Check> {
     let (force, force_ref, sensors) = jet_wall_means(r);
-    let (mut far, mut corner) = ((0.0, 0.0, 0.0), (f64::NAN, f64::NAN, f64::NAN));
+    let mut far = (0.0, 0.0, 0.0);
     for &(y_over_h, cp, cp_ref) in &sensors {
         let e = (cp - cp_ref).abs();
         if y_over_h >= 0.3 && e >= far.0 {
             far = (e, cp, cp_ref);
         }
-        if corner.0.is_nan() {
-            corner = (e, cp, cp_ref);
-        }
     }
+    // The sensor nearest the floor, whatever the order of the case file's sensors.
+    let corner = sensors
+        .iter()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or((f64::NAN, f64::NAN, f64::NAN), |&(_, cp, cp_ref)| {
+            ((cp - cp_ref).abs(), cp, cp_ref)
+        });
     vec![
         check(
             r,
@@ -620,7 +624,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
             let p = dir.join("jet-wall_cp.png");
             line_plot(
                 &p,
-                "Plane jet on a wall: pressure along the wall (U = 1 m/s)",
+                "Plane jet on a wall: pressure along the wall",
                 "y / h (h: full jet width)",
                 "Cp = p / (rho U^2 / 2)",
                 &[
