@@ -97,7 +97,7 @@ fn sensor_pressure(sim: &Simulation<2>, pos: &[f64], dir: &[f64], size: f64) -> 
     let mut s = 0.0;
     for k in 0..n {
         let f = if n == 1 { 0.0 } else { k as f64 / (n - 1) as f64 - 0.5 };
-        s += sim.pressure_at(&(c + d * (f * size))).unwrap_or(0.0);
+        s += sim.sensor_pressure_at(&(c + d * (f * size)));
     }
     s / n as f64
 }
