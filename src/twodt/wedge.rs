@@ -214,11 +214,9 @@ fn pressure_moments(sim: &crate::sph::solver::Simulation<2>, dx: f64, vt: f64, d
     for k in 0..steps {
         let s = (k as f64 + 0.5) * ds;
         let p = V2::new(0.0, -vt) + dir * s + n * dx;
-        if let Some(pr) = sim.pressure_at(&p) {
-            let pr = pr.max(0.0);
-            m0 += pr * ds / vt;
-            m1 += pr * (s / vt) * ds / vt;
-        }
+        let pr = sim.sensor_pressure_at(&p).max(0.0);
+        m0 += pr * ds / vt;
+        m1 += pr * (s / vt) * ds / vt;
     }
     (m0, m1)
 }
