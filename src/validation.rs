@@ -56,7 +56,7 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "oscillating-drop" => Some(40.0),
         "dam-break-mm" => Some(50.0),
         "dam-break" => Some(80.0),
-        "jet-wall" => Some(20.0),
+        "jet-wall" | "jet-plate" => Some(20.0),
         _ => None,
     }
 }
@@ -447,8 +447,10 @@ pub fn taylor_jet_cp(y: f64, h: f64) -> f64 {
     1.0 - lo * lo
 }
 
-/// Means over the steady window of the `jet-wall` run: the wall force, its momentum-theorem value ρU²b (U
-/// from the case's moving block), and for each sensor (y/h, Cp, Taylor's Cp).
+/// Means over the steady window of a `jet-wall` or `jet-plate` run: the force on the case's first wall, its
+/// momentum-theorem value ρU² × the jet's width on the wall side of the symmetry plane (b for `jet-wall`,
+/// whose floor is that plane; 2b for `jet-plate`), with U from the case's moving blocks, and for each sensor
+/// (y/h, Cp, Taylor's Cp).
 fn jet_wall_means(r: &RunResult) -> (f64, f64, Vec<(f64, f64, f64)>) {
     let b = r.case.scales.length;
     let u = r
@@ -475,7 +477,9 @@ fn jet_wall_means(r: &RunResult) -> (f64, f64, Vec<(f64, f64, f64)>) {
             (y / (2.0 * b), cp, taylor_jet_cp(y, 2.0 * b))
         })
         .collect();
-    (mean(&col(r, "fx_tank")), 2.0 * q * b, sensors)
+    let width = if r.case.name == "jet-plate" { 2.0 * b } else { b };
+    let wall = r.case.walls.first().map_or("tank", |w| w.name.as_str());
+    (mean(&col(r, &format!("fx_{wall}"))), 2.0 * q * width, sensors)
 }
 
 /// Jet on a wall: the mean wall force over the steady window within 2 % of ρU²b (the momentum theorem; the
@@ -525,6 +529,55 @@ pub fn jet_wall(r: &RunResult) -> Vec<Check> {
     ]
 }
 
+/// Largest |Cp − Cp_Taylor| a `jet-plate` sensor may show: 3 % of the stagnation pressure (the issue's
+/// tolerance for the oscillating drop). Set after a first measurement, which it does not loosen: 0.0195 at
+/// b/dx 10 and 0.0107 at b/dx 20 (first order), the largest errors at the stagnation sensors; the slug's sound
+/// waves stir the means by about 1 %.
+pub const JET_PLATE_CP_TOLERANCE: f64 = 0.03;
+
+/// Jet on a flat wall (`jet-plate`): the mean wall force over the steady window within 2 % of ρU²h, and every
+/// sensor's mean Cp within [`JET_PLATE_CP_TOLERANCE`] of Taylor's free-streamline solution, the stagnation
+/// point included (reported on its own).
+pub fn jet_plate(r: &RunResult) -> Vec<Check> {
+    let (force, force_ref, sensors) = jet_wall_means(r);
+    let worst = sensors
+        .iter()
+        .map(|&(_, cp, cp_ref)| ((cp - cp_ref).abs(), cp, cp_ref))
+        .fold((0.0, f64::NAN, f64::NAN), |a, b| if b.0 >= a.0 { b } else { a });
+    let stagnation = sensors
+        .iter()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map_or((f64::NAN, f64::NAN, f64::NAN), |&(_, cp, cp_ref)| {
+            ((cp - cp_ref).abs(), cp, cp_ref)
+        });
+    vec![
+        check(
+            r,
+            "wall force / (rho U^2 h), mean over the steady window, rel. error",
+            force / force_ref,
+            1.0,
+            (force / force_ref - 1.0).abs(),
+            Some(0.02),
+        ),
+        check(
+            r,
+            "wall Cp vs Taylor, every sensor (y/h 0.025-1.5), max abs. error",
+            worst.1,
+            worst.2,
+            worst.0,
+            Some(JET_PLATE_CP_TOLERANCE),
+        ),
+        check(
+            r,
+            "wall Cp at the stagnation sensor (y/h 0.025) vs Taylor",
+            stagnation.1,
+            stagnation.2,
+            stagnation.0,
+            None,
+        ),
+    ]
+}
+
 /// The checks of a built-in case, if it has any.
 pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
     Some(match r.case.name.as_str() {
@@ -534,6 +587,7 @@ pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
         "dam-break-mm" => martin_moyce(r),
         "dam-break" => dam_break(r),
         "jet-wall" => jet_wall(r),
+        "jet-plate" => jet_plate(r),
         _ => return None,
     })
 }
@@ -611,7 +665,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
                 files.push(p);
             }
         }
-        "jet-wall" => {
+        "jet-wall" | "jet-plate" => {
             // Mean Cp of each sensor over the steady window, and Taylor's curve.
             let b = r.case.scales.length;
             let sph: Vec<(f64, f64)> = jet_wall_means(r).2.iter().map(|&(y, cp, _)| (y, cp)).collect();
@@ -621,10 +675,15 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
                     (y_over_h, taylor_jet_cp(y_over_h * 2.0 * b, 2.0 * b))
                 })
                 .collect();
-            let p = dir.join("jet-wall_cp.png");
+            let p = dir.join(format!("{}_cp.png", r.case.name));
+            let title = if r.case.name == "jet-plate" {
+                "Plane jet on a flat wall: pressure along the wall"
+            } else {
+                "Plane jet into a floor-wall corner: pressure along the wall"
+            };
             line_plot(
                 &p,
-                "Plane jet on a wall: pressure along the wall",
+                title,
                 "y / h (h: full jet width)",
                 "Cp = p / (rho U^2 / 2)",
                 &[

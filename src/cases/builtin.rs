@@ -8,6 +8,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("elliptic-drop", include_str!("../../cases/elliptic-drop.toml")),
     ("oscillating-drop", include_str!("../../cases/oscillating-drop.toml")),
     ("jet-wall", include_str!("../../cases/jet-wall.toml")),
+    ("jet-plate", include_str!("../../cases/jet-plate.toml")),
 ];
 
 /// The TOML text of a built-in case.
