@@ -9,6 +9,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("oscillating-drop", include_str!("../../cases/oscillating-drop.toml")),
     ("jet-wall", include_str!("../../cases/jet-wall.toml")),
     ("jet-plate", include_str!("../../cases/jet-plate.toml")),
+    ("jet-floor", include_str!("../../cases/jet-floor.toml")),
 ];
 
 /// The TOML text of a built-in case.
