@@ -79,20 +79,20 @@ fn martin_moyce_column_height_follows_table_6() {
     assert!(front.iter().all(|c| c.error.is_finite()), "front errors not computed");
 }
 
-/// A plane jet on a wall (the dam break's corner, without gravity): the mean wall force over the steady
-/// window equals ρU²b, the momentum theorem, within 2 %. Measured 0.35 % (b/dx 10). The sensors' Cp is
-/// reported, not required: it reads above the free-streamline solution and the excess grows with time at
-/// the corner (docs/method.md).
 /// The whole jet on a flat wall (`jet-plate`, no floor): the wall force within 2 % of ρU²h and every sensor's
 /// mean Cp within 0.03 of Taylor's free-streamline solution. Measured at b/dx 10: force 0.15 %, Cp 0.0195
-/// (the stagnation sensors, 0.98 against 1.00). Without the corner the stagnation pressure is right, so the
-/// excess of `jet-wall` belongs to the floor-wall corner.
+/// (the stagnation sensors, 0.98 against 1.00). Without the floor the stagnation pressure is right: the
+/// excess of `jet-wall` comes from its floor's ghosts (`jet-floor`, docs/method.md check 11).
 #[test]
 fn jet_on_a_flat_wall_has_the_free_streamline_pressure() {
     let r = run_case("jet-plate", 10.0, None);
     assert_checks(&validation::jet_plate(&r));
 }
 
+/// A plane jet on a wall (the dam break's corner, without gravity): the mean wall force over the steady
+/// window equals ρU²b, the momentum theorem, within 2 %. Measured 0.35 % (b/dx 10). The sensors' Cp is
+/// reported, not required: it reads above the free-streamline solution and the excess grows with time at
+/// the corner (docs/method.md).
 #[test]
 fn jet_on_a_wall_carries_its_momentum_flux() {
     let r = run_case("jet-wall", 10.0, None);
