@@ -15,6 +15,22 @@ struct Cli {
     command: Command,
 }
 
+/// `--ghosts`: the CLI's names for [`bowwave::sph::polyline_wall::GhostKind`].
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+enum GhostsArg {
+    Fixed,
+    Images,
+}
+
+impl From<GhostsArg> for bowwave::sph::polyline_wall::GhostKind {
+    fn from(g: GhostsArg) -> Self {
+        match g {
+            GhostsArg::Fixed => Self::Fixed,
+            GhostsArg::Images => Self::Images,
+        }
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Run a case (built-in name or TOML file) and write its time series, VTK snapshots and plots.
@@ -37,6 +53,11 @@ enum Command {
         /// No progress bar.
         #[arg(long, short)]
         quiet: bool,
+        /// Ghosts of every wall's straight sides, overriding the case file: `fixed` (a lattice valued by MLS at
+        /// the mirror points, thesis §7.1.1) or `images` (mirror images of the fluid particles, Colagrossi &
+        /// Landrini 2003; corners keep fixed ghosts). Default: the case's (fixed unless it says otherwise).
+        #[arg(long, value_enum)]
+        ghosts: Option<GhostsArg>,
         /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
         /// (by default such a rise is diagnosed as an unstable time integration or a non-conservative term).
         #[arg(long)]
@@ -53,6 +74,9 @@ enum Command {
         /// Write series and plots of each validation run under this folder.
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Ghosts of every wall's straight sides, overriding the case files (see `run --help`).
+        #[arg(long, value_enum)]
+        ghosts: Option<GhostsArg>,
     },
     /// 2D+t bow-wave run: one hull at one Froude number, from the stem to the plunge of the bow wave (or
     /// further), with the plunge point and jet metrics (metrics.csv/.json), series.csv, eta.csv (free-surface
@@ -778,9 +802,13 @@ fn run() -> anyhow::Result<()> {
             end,
             no_vtk,
             quiet,
+            ghosts,
             allow_energy_growth,
         } => {
-            let case = cases::load(&case)?;
+            let mut case = cases::load(&case)?;
+            if let Some(kind) = ghosts {
+                case.set_ghosts(kind.into());
+            }
             let out = out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
             let opts = cases::run::RunOptions {
                 res,
@@ -793,8 +821,8 @@ fn run() -> anyhow::Result<()> {
             let code = validation::run_and_report(&case, &out, opts)?;
             std::process::exit(code);
         }
-        Command::Validate { case, res, out } => {
-            let ok = validation::validate_cli(case.as_deref(), res, out.as_deref())?;
+        Command::Validate { case, res, out, ghosts } => {
+            let ok = validation::validate_cli(case.as_deref(), res, out.as_deref(), ghosts.map(Into::into))?;
             std::process::exit(if ok { 0 } else { 1 });
         }
         Command::Bench {

@@ -10,6 +10,7 @@ use crate::cases::{
 };
 use crate::io::plot::{line_plot, Series, Style};
 use crate::reference::{self, interp, named};
+use crate::sph::polyline_wall::GhostKind;
 use std::path::Path;
 
 /// One validated quantity.
@@ -33,7 +34,16 @@ impl Check {
 
 fn check(r: &RunResult, quantity: &str, value: f64, reference: f64, error: f64, tolerance: Option<f64>) -> Check {
     Check {
-        case: format!("{} (res {:.0})", r.case.name, r.case.scales.length / r.dx),
+        case: format!(
+            "{} (res {:.0}{})",
+            r.case.name,
+            r.case.scales.length / r.dx,
+            if r.case.walls.iter().any(|w| w.ghosts == GhostKind::Images) {
+                ", images"
+            } else {
+                ""
+            }
+        ),
         quantity: quantity.into(),
         value,
         reference,
@@ -868,7 +878,14 @@ pub fn cavity_summary(r: &RunResult) -> Option<String> {
 }
 
 /// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
-pub fn validate_cli(case: Option<&str>, res: Option<f64>, out: Option<&Path>) -> anyhow::Result<bool> {
+///
+/// `ghosts`: if given, the ghost kind of every wall of every case (as `bowwave validate --ghosts`).
+pub fn validate_cli(
+    case: Option<&str>,
+    res: Option<f64>,
+    out: Option<&Path>,
+    ghosts: Option<GhostKind>,
+) -> anyhow::Result<bool> {
     let names: Vec<&str> = match case {
         Some(n) => vec![n],
         None => cases::builtin::builtin_names(),
@@ -876,7 +893,10 @@ pub fn validate_cli(case: Option<&str>, res: Option<f64>, out: Option<&Path>) ->
     let mut all = vec![];
     let mut ok = true;
     for n in names {
-        let c = cases::load(n)?;
+        let mut c = cases::load(n)?;
+        if let Some(kind) = ghosts {
+            c.set_ghosts(kind);
+        }
         let res = res.or(full_resolution(n));
         eprintln!(
             "validating {n} at resolution {:.0} ...",

@@ -4,11 +4,13 @@ use bowwave::cases::{
     self,
     run::{run, RunOptions},
 };
+use bowwave::sph::polyline_wall::GhostKind;
 
-fn positions_with_threads(n: usize) -> (Vec<u64>, Vec<u64>) {
+fn positions_with_threads(n: usize, ghosts: GhostKind) -> (Vec<u64>, Vec<u64>) {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
     pool.install(|| {
-        let case = cases::load("dam-break").unwrap();
+        let mut case = cases::load("dam-break").unwrap();
+        case.set_ghosts(ghosts);
         let r = run(
             &case,
             &RunOptions {
@@ -44,9 +46,17 @@ fn positions_with_threads(n: usize) -> (Vec<u64>, Vec<u64>) {
 
 #[test]
 fn one_and_two_threads_give_identical_bits() {
-    let (a, sa) = positions_with_threads(1);
-    let (b, sb) = positions_with_threads(2);
-    assert_eq!(a.len(), b.len());
-    assert!(a == b, "particle state differs between 1 and 2 threads");
-    assert!(sa == sb, "time series differ between 1 and 2 threads");
+    for ghosts in [GhostKind::Fixed, GhostKind::Images] {
+        let (a, sa) = positions_with_threads(1, ghosts);
+        let (b, sb) = positions_with_threads(2, ghosts);
+        assert_eq!(a.len(), b.len());
+        assert!(
+            a == b,
+            "particle state differs between 1 and 2 threads ({ghosts:?} ghosts)"
+        );
+        assert!(
+            sa == sb,
+            "time series differ between 1 and 2 threads ({ghosts:?} ghosts)"
+        );
+    }
 }

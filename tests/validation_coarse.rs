@@ -5,6 +5,7 @@ use bowwave::cases::{
     self,
     run::{run, RunOptions},
 };
+use bowwave::sph::polyline_wall::GhostKind;
 use bowwave::validation::{self, Check};
 
 fn run_case(name: &str, res: f64, end: Option<f64>) -> bowwave::cases::run::RunResult {
@@ -34,6 +35,16 @@ fn assert_checks(checks: &[Check]) {
             c.tolerance
         );
     }
+}
+
+/// The same tank with image ghosts on its sides and floor (corners fixed): the same checks. Measured
+/// 0.52 % (fixed ghosts: 0.57 %).
+#[test]
+fn hydrostatic_tank_with_image_ghosts_keeps_pressure_and_rest_to_t50() {
+    let r = run_with_image_ghosts("hydrostatic", 20.0);
+    let c = validation::hydrostatic(&r);
+    assert_checks(&c);
+    assert!(c[2].error < 0.01, "bottom force / weight off by {}", c[2].error);
 }
 
 #[test]
@@ -87,6 +98,55 @@ fn martin_moyce_column_height_follows_table_6() {
 fn jet_on_a_flat_wall_has_the_free_streamline_pressure() {
     let r = run_case("jet-plate", 10.0, None);
     assert_checks(&validation::jet_plate(&r));
+}
+
+fn run_with_image_ghosts(name: &str, res: f64) -> bowwave::cases::run::RunResult {
+    let mut case = cases::load(name).expect("built-in case parses");
+    case.set_ghosts(GhostKind::Images);
+    let r = run(
+        &case,
+        &RunOptions {
+            res: Some(res),
+            ..Default::default()
+        },
+    )
+    .expect("run");
+    assert!(r.blowup.is_none(), "{name} with image ghosts blew up: {:?}", r.blowup);
+    r
+}
+
+/// Two half-jets meeting over a floor (`jet-floor`) and a jet into the floor–wall corner (`jet-wall`), with
+/// image ghosts on the straight sides (Colagrossi & Landrini 2003): the stagnation sensor, and in the corner
+/// every sensor, within [`validation::JET_PLATE_CP_TOLERANCE`] of Taylor's Cp; the corner's force within 2 %.
+/// Measured at b/dx 10: jet-floor stagnation 0.983 (fixed ghosts: 2.79); jet-wall corner 0.994 (fixed:
+/// 1.70), y/h ≥ 0.3 within 0.012 (fixed: 0.23). At b/dx 20 `bowwave validate jet-floor --ghosts images`
+/// passes every sensor (0.014); at b/dx 10 its worst sensor is 0.033 off, so only the stagnation one is held
+/// here (docs/method.md check 12).
+#[test]
+fn flow_leaving_a_floor_of_image_ghosts_keeps_the_stagnation_pressure() {
+    let r = run_with_image_ghosts("jet-floor", 10.0);
+    let c = validation::jet_floor(&r);
+    let stagnation = &c[1];
+    validation::print_checks(&c);
+    assert!(stagnation.quantity.contains("stagnation"), "{}", stagnation.quantity);
+    assert!(
+        stagnation.error <= validation::JET_PLATE_CP_TOLERANCE,
+        "stagnation Cp {} against {}",
+        stagnation.value,
+        stagnation.reference
+    );
+    let r = run_with_image_ghosts("jet-wall", 10.0);
+    let c = validation::jet_wall(&r);
+    assert_checks(&c[..1]);
+    for k in [1, 2] {
+        assert!(
+            c[k].error <= validation::JET_PLATE_CP_TOLERANCE,
+            "{}: Cp {} against {}",
+            c[k].quantity,
+            c[k].value,
+            c[k].reference
+        );
+    }
 }
 
 /// A plane jet on a wall (the dam break's corner, without gravity): the mean wall force over the steady

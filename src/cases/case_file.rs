@@ -146,6 +146,10 @@ pub struct WallSpec {
     pub fluid_side: FluidSide,
     /// Constant translation velocity (m/s); omitted: fixed.
     pub velocity: Option<Vec<f64>>,
+    /// Ghosts of the straight sides: "fixed" (MLS-valued lattice, thesis §7.1.1; the default) or "images"
+    /// (mirror images of the fluid particles, Colagrossi & Landrini 2003; corners keep fixed ghosts).
+    #[serde(default)]
+    pub ghosts: crate::sph::polyline_wall::GhostKind,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -244,6 +248,13 @@ pub struct Output {
 }
 
 impl CaseFile {
+    /// Gives every wall ghosts of kind `kind` (the CLI's `--ghosts`).
+    pub fn set_ghosts(&mut self, kind: crate::sph::polyline_wall::GhostKind) {
+        for w in &mut self.walls {
+            w.ghosts = kind;
+        }
+    }
+
     /// Parses and checks a case from TOML text; `file` names it in errors.
     pub fn parse(text: &str, file: &str) -> Result<Self, InputError> {
         let case: CaseFile = parse_toml(text, file)?;

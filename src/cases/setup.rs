@@ -144,14 +144,17 @@ pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>
                 Some(v) => RigidMotion::ConstantVelocity(v2(v)),
                 None => RigidMotion::Fixed,
             };
-            Box::new(PolylineWall::new(
-                &w.name,
-                w.points.iter().map(|p| v2(p)).collect(),
-                w.fluid_side,
-                motion,
-                dx,
-                support,
-            )) as Box<dyn Boundary<2>>
+            Box::new(
+                PolylineWall::new(
+                    &w.name,
+                    w.points.iter().map(|p| v2(p)).collect(),
+                    w.fluid_side,
+                    motion,
+                    dx,
+                    support,
+                )
+                .with_ghosts(w.ghosts),
+            ) as Box<dyn Boundary<2>>
         })
         .collect()
 }

@@ -45,6 +45,15 @@ impl<const D: usize> GhostGeometry<D> {
         self.volume.clear();
         self.mirror.clear();
     }
+    /// Keeps the first `n` ghosts.
+    pub fn truncate(&mut self, n: usize) {
+        self.pos.truncate(n);
+        self.interp.truncate(n);
+        self.wall_vel.truncate(n);
+        self.wall_acc.truncate(n);
+        self.volume.truncate(n);
+        self.mirror.truncate(n);
+    }
     pub fn append(&mut self, other: &GhostGeometry<D>) {
         self.pos.extend_from_slice(&other.pos);
         self.interp.extend_from_slice(&other.interp);
@@ -63,6 +72,11 @@ pub trait Boundary<const D: usize>: Send + Sync {
     fn moves(&self) -> bool;
     /// Writes the ghost geometry at time `t` into `out` (cleared first by the caller).
     fn ghosts(&self, t: f64, out: &mut GhostGeometry<D>);
+    /// Ghosts that are the mirror images of the fluid particles at `pos` (the standard ghost technique of
+    /// Colagrossi & Landrini 2003, recalled at the start of thesis §7.1.1), appended to `out`, with the index
+    /// of each image's fluid particle appended to `source`. The image's mirror point (`interp`) is its
+    /// particle. Walls with fixed ghosts only write none (the default).
+    fn images(&self, _t: f64, _pos: &[SVector<f64, D>], _out: &mut GhostGeometry<D>, _source: &mut Vec<usize>) {}
     /// Safeguard against wall penetration: if `x` lies on the solid side of the boundary at time `t`
     /// (within the kernel support of the wall), move it back to the fluid side, remove its normal velocity
     /// relative to the wall, and return true. The solver counts these corrections and reports them.

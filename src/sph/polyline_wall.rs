@@ -23,6 +23,22 @@ pub enum FluidSide {
     Right,
 }
 
+/// How a polyline wall makes the ghosts along its straight sides.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum GhostKind {
+    /// Fixed ghost particles on a lattice, valued by MLS at their mirror points (thesis §7.1.1). The default:
+    /// it handles any profile, moving or deforming.
+    #[default]
+    Fixed,
+    /// The mirror images of the fluid particles within the kernel support of each straight side, carrying
+    /// their particle's values (the standard ghosts of Colagrossi & Landrini 2003, J. Comput. Phys.
+    /// 191:448). The corner quadrants keep their fixed point-mirror ghosts (Fig. 7.3). For tanks: under a
+    /// stagnation point that the flow leaves along the wall's normal, the fixed lattice over-pressures (the
+    /// `jet-floor` case: Cp 2.8 against 1.0), the images do not (docs/method.md, check 12).
+    Images,
+}
+
 /// A rigid 2D polyline wall.
 #[derive(Clone, Debug)]
 pub struct PolylineWall {
@@ -32,7 +48,8 @@ pub struct PolylineWall {
     pub motion: RigidMotion<2>,
     ds: f64,
     support: f64,
-    /// Ghost geometry at t = 0.
+    kind: GhostKind,
+    /// Fixed ghost geometry at t = 0 (with [`GhostKind::Images`], the corner ghosts only).
     base: GhostGeometry<2>,
 }
 
@@ -56,10 +73,36 @@ impl PolylineWall {
             motion,
             ds,
             support,
+            kind: GhostKind::Fixed,
             base: GhostGeometry::default(),
         };
         wall.base = ghost_layers(&wall.points, fluid_side, ds, support);
         wall
+    }
+
+    /// The same wall with ghosts of kind `kind`: with [`GhostKind::Images`] only the fixed ghosts that
+    /// mirror through a corner vertex are kept; the straight sides get images of the fluid at each stage.
+    pub fn with_ghosts(mut self, kind: GhostKind) -> Self {
+        self.kind = kind;
+        if kind == GhostKind::Images {
+            let all = std::mem::take(&mut self.base);
+            for k in 0..all.len() {
+                if all.mirror[k] == Mirror::Point {
+                    self.base.pos.push(all.pos[k]);
+                    self.base.interp.push(all.interp[k]);
+                    self.base.wall_vel.push(all.wall_vel[k]);
+                    self.base.wall_acc.push(all.wall_acc[k]);
+                    self.base.volume.push(all.volume[k]);
+                    self.base.mirror.push(Mirror::Point);
+                }
+            }
+        }
+        self
+    }
+
+    /// How the straight sides make their ghosts.
+    pub fn ghost_kind(&self) -> GhostKind {
+        self.kind
     }
 
     /// Particle spacing and kernel support used for the ghosts (m).
@@ -90,6 +133,36 @@ impl Boundary<2> for PolylineWall {
         out.wall_acc.extend(self.base.pos.iter().map(|_| a));
         out.volume.extend_from_slice(&self.base.volume);
         out.mirror.extend_from_slice(&self.base.mirror);
+    }
+
+    fn images(&self, t: f64, pos: &[V2], out: &mut GhostGeometry<2>, source: &mut Vec<usize>) {
+        if self.kind != GhostKind::Images {
+            return;
+        }
+        let d = self.motion.displacement(t);
+        let v = self.motion.velocity(t);
+        let a = self.motion.acceleration(t);
+        let normals = solid_normals(&self.points, self.fluid_side);
+        for (w, n) in self.points.windows(2).zip(&normals) {
+            let (p0, p1) = (w[0] + d, w[1] + d);
+            let along = p1 - p0;
+            let l2 = along.norm_squared();
+            for (j, x) in pos.iter().enumerate() {
+                let r = x - p0;
+                let s = r.dot(&along) / l2;
+                let depth = -r.dot(n); // distance from the wall on the fluid side
+                if !(0.0..=1.0).contains(&s) || depth <= 0.0 || depth >= self.support {
+                    continue;
+                }
+                out.pos.push(x + n * (2.0 * depth));
+                out.interp.push(*x);
+                out.wall_vel.push(v);
+                out.wall_acc.push(a);
+                out.volume.push(0.0); // the solver gives an image its particle's volume m/ρ
+                out.mirror.push(Mirror::Plane);
+                source.push(j);
+            }
+        }
     }
 
     fn keep_out(&self, t: f64, x: &mut V2, u: &mut V2) -> bool {
@@ -385,5 +458,58 @@ mod tests {
         assert_eq!(points, 32, "the two 4x4 corner blocks mirror through the vertices");
         // Count: bottom 4 layers × 20 + two sides × 4 layers × 10 + two corners × 16.
         assert_eq!(g.pos.len(), 4 * 20 + 2 * 4 * 10 + 2 * 16);
+    }
+
+    #[test]
+    fn image_ghosts_mirror_each_particle_within_the_support_of_each_side() {
+        let dx = 0.1;
+        let support = 0.399;
+        let pts = vec![
+            V2::new(0.0, 1.0),
+            V2::new(0.0, 0.0),
+            V2::new(2.0, 0.0),
+            V2::new(2.0, 1.0),
+        ];
+        let wall = PolylineWall::new("tank", pts, FluidSide::Left, RigidMotion::Fixed, dx, support)
+            .with_ghosts(GhostKind::Images);
+        // Only the two 4×4 corner blocks of fixed ghosts remain.
+        let mut fixed = GhostGeometry::default();
+        wall.ghosts(0.0, &mut fixed);
+        assert_eq!(fixed.len(), 32);
+        assert!(fixed.mirror.iter().all(|m| *m == Mirror::Point));
+        // A particle near the left-hand corner has two images (floor and side wall), one mid-tank near the
+        // floor has one, one beyond the support of every side none.
+        let fluid = [V2::new(0.15, 0.05), V2::new(1.0, 0.25), V2::new(1.0, 0.5)];
+        let (mut out, mut source) = (GhostGeometry::default(), vec![]);
+        wall.images(0.0, &fluid, &mut out, &mut source);
+        let mut got: Vec<(usize, V2)> = source.iter().copied().zip(out.pos.iter().copied()).collect();
+        got.sort_by(|a, b| (a.0, a.1.x).partial_cmp(&(b.0, b.1.x)).unwrap());
+        let want = [
+            (0, V2::new(-0.15, 0.05)),
+            (0, V2::new(0.15, -0.05)),
+            (1, V2::new(1.0, -0.25)),
+        ];
+        assert_eq!(got.len(), want.len(), "{got:?}");
+        for ((j, p), (wj, wp)) in got.iter().zip(&want) {
+            assert_eq!(j, wj);
+            assert!((p - wp).norm() < 1e-12, "{p:?} != {wp:?}");
+        }
+        // Each image's mirror point is its particle, and the wall is halfway between.
+        for (k, &j) in source.iter().enumerate() {
+            assert_eq!(out.interp[k], fluid[j]);
+            assert_eq!(out.mirror[k], Mirror::Plane);
+        }
+        // A wall with fixed ghosts makes no images.
+        let plain = PolylineWall::new(
+            "t",
+            vec![V2::new(0.0, 0.0), V2::new(2.0, 0.0)],
+            FluidSide::Left,
+            RigidMotion::Fixed,
+            dx,
+            support,
+        );
+        let (mut out2, mut src2) = (GhostGeometry::default(), vec![]);
+        plain.images(0.0, &fluid, &mut out2, &mut src2);
+        assert!(out2.is_empty() && src2.is_empty());
     }
 }

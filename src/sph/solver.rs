@@ -111,6 +111,11 @@ pub struct GhostState<const D: usize> {
     pub geom: GhostGeometry<D>,
     /// Index of the boundary each ghost belongs to.
     pub owner: Vec<usize>,
+    /// For an image ghost ([`crate::sph::polyline_wall::GhostKind::Images`]), the fluid particle it mirrors;
+    /// `None` for a fixed ghost. The fixed ghosts come first.
+    pub image_of: Vec<Option<usize>>,
+    /// Number of fixed ghosts.
+    pub n_fixed: usize,
     pub vel: Vec<SVector<f64, D>>,
     pub rho: Vec<f64>,
     pub p: Vec<f64>,
@@ -331,6 +336,26 @@ impl<const D: usize> Simulation<D> {
             g.owner.extend(std::iter::repeat_n(k, tmp.len()));
             g.geom.append(&tmp);
         }
+        g.n_fixed = g.geom.len();
+        g.image_of = vec![None; g.n_fixed];
+    }
+
+    /// Replaces the image ghosts by those of the fluid at `pos` (after the fixed ones).
+    fn place_images(&mut self, t: f64, pos: &[SVector<f64, D>]) {
+        let g = &mut self.ghosts;
+        g.geom.truncate(g.n_fixed);
+        g.owner.truncate(g.n_fixed);
+        g.image_of.truncate(g.n_fixed);
+        let mut tmp = GhostGeometry::default();
+        let mut source = Vec::new();
+        for (k, b) in self.boundaries.iter().enumerate() {
+            tmp.clear();
+            source.clear();
+            b.images(t, pos, &mut tmp, &mut source);
+            g.owner.extend(std::iter::repeat_n(k, tmp.len()));
+            g.image_of.extend(source.iter().map(|&j| Some(j)));
+            g.geom.append(&tmp);
+        }
     }
 
     /// Pressure of the fluid particles at the last evaluation (Pa).
@@ -344,6 +369,7 @@ impl<const D: usize> Simulation<D> {
         if !self.ghosts_static {
             self.place_ghosts(t);
         }
+        self.place_images(t, pos);
         let nf = pos.len();
         self.all_pos.clear();
         self.all_pos.extend_from_slice(pos);
@@ -362,6 +388,7 @@ impl<const D: usize> Simulation<D> {
         let mass = &self.fluid.mass;
         let body = self.cfg.body_force;
         let geom = &self.ghosts.geom;
+        let image_of = &self.ghosts.image_of;
         let shepard = self.cfg.ghost_interpolation == GhostInterpolation::Shepard;
         let values: Vec<GhostValues<D>> = (0..geom.len())
             .into_par_iter()
@@ -409,6 +436,14 @@ impl<const D: usize> Simulation<D> {
                     };
                     let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
                     let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
+                    if let Some(j) = image_of[g] {
+                        // An image carries its particle's values, mirrored: free slip (7.2) and the Neumann
+                        // condition (7.4) from the particle itself; the density gradient from the fit above.
+                        let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
+                        let p =
+                            ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
+                        return (u, eos.density(p), p, grad_g, mass[j] / rho[j]);
+                    }
                     (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g])
                 },
             )
@@ -419,6 +454,10 @@ impl<const D: usize> Simulation<D> {
         gs.p = values.iter().map(|v| v.2).collect();
         gs.grad_rho = values.iter().map(|v| v.3).collect();
         gs.volume = values.iter().map(|v| v.4).collect();
+        // An image's geometric volume is its particle's (the sensors' wet fraction counts it as solid side).
+        for g in gs.n_fixed..gs.geom.len() {
+            gs.geom.volume[g] = gs.volume[g];
+        }
         self.timings.ghost_mirroring += clock.elapsed().as_secs_f64();
     }
 
