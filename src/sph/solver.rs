@@ -770,16 +770,17 @@ impl<const D: usize> Simulation<D> {
     }
 
     /// Pressure a wall sensor at `x` reads (Pa): the Shepard average over fluid and ghosts
-    /// ([`Simulation::pressure_at`]) times the wetness min(1, f / [`SENSOR_WET_FRACTION`]), where
-    /// f = Σ_fluid W V / (1 − Σ_ghosts W V_lattice) is the part of the fluid side of the support that water
-    /// fills (the ghosts' lattice volumes tile the solid side, whether or not a ghost is active; so f ≈ 1
-    /// under water at a flat wall, in a concave corner and at a convex one alike). A sensor that no water
-    /// touches then reads about 0 instead of the pressure of a distant splash: the Shepard average divides
-    /// by the weight of whatever few particles reach the support, and the ghosts whose mirror points the
-    /// splash reaches carry its pressure with their full volume (at the dam break's first impact that gave
-    /// P1 2.3 ρgH, and 10–12 ρgH 0.1–0.2H above the floor, while the water was a tongue 0.03H thin; the
-    /// P1 check's "first impact" fell on that spike). Under water the reading
-    /// is the Shepard average unchanged. Call after [`Simulation::refresh`].
+    /// ([`Simulation::pressure_at`]) times the wetness min(1, f / [`SENSOR_WET_FRACTION`]), where f = Σ_fluid W V /
+    /// (1 − Σ_ghosts W V_lattice) is the part of the fluid side of the support that water fills (the ghosts' lattice
+    /// volumes tile the solid side, whether or not a ghost is active; so f ≈ 1 under water at a flat wall, in a
+    /// concave corner and at a convex one alike; with image ghosts their own volumes m/ρ stand in for the lattice's,
+    /// so f ≈ 1 still where water covers the wall, but a thin film reads lower, its images thinning with it). A
+    /// sensor that no water touches then reads about 0 instead of the pressure of a distant splash: the Shepard
+    /// average divides by the weight of whatever few particles reach the support, and the ghosts whose mirror points
+    /// the splash reaches carry its pressure with their full volume (at the dam break's first impact that gave P1 2.3
+    /// ρgH, and 10–12 ρgH 0.1–0.2H above the floor, while the water was a tongue 0.03H thin; the P1 check's "first
+    /// impact" fell on that spike). Under water the reading is the Shepard average unchanged. Call after
+    /// [`Simulation::refresh`].
     pub fn sensor_pressure_at(&self, x: &SVector<f64, D>) -> f64 {
         let nf = self.fluid.len();
         let (mut fluid, mut solid) = (0.0, 0.0);

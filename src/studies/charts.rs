@@ -6,6 +6,7 @@
 use crate::cases::run::{run, RunOptions};
 use crate::cases::CaseFile;
 use crate::io::atomic::write_atomic;
+use crate::sph::polyline_wall::GhostKind;
 use crate::sph::{
     density_diffusion::DensityDiffusion, integrator::Integrator, kernel::KernelKind, viscosity::Viscosity,
 };
@@ -14,8 +15,17 @@ use std::path::{Path, PathBuf};
 /// A method variant, by name: `delta-sph` (the default scheme), `molteni` (Molteni–Colagrossi diffusion (5.4),
 /// no gradient correction), `wcsph` (no density diffusion), `wendland` (Wendland C2 kernel, h = 2 dx),
 /// `pc` (predictor–corrector at its default CFL), `table`/`exact-kernel` (tabulated or exact kernel gradient),
-/// or `alpha=A`, `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter.
+/// `images`/`fixed-ghosts` (every wall's straight sides as image ghosts, or the fixed lattice), or `alpha=A`, `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter.
 pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
+    let ghosts = match name {
+        "images" => Some(GhostKind::Images),
+        "fixed-ghosts" => Some(GhostKind::Fixed),
+        _ => None,
+    };
+    if let Some(kind) = ghosts {
+        case.set_ghosts(kind);
+        return Ok(());
+    }
     let n = &mut case.numerics;
     match name {
         "delta-sph" => n.density_diffusion = DensityDiffusion::DeltaSph,
@@ -38,7 +48,7 @@ pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, alpha=A, delta=D, cfl=C or h=H (h/dx)"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
                 )
             })?;
             let x: f64 = v
@@ -423,6 +433,14 @@ mod tests {
         assert_eq!(n.h_over_dx, Some(1.5));
         assert_eq!(n.cfl, Some(2.5));
         assert_eq!(n.density_diffusion, DensityDiffusion::MolteniColagrossi);
+        assert!(
+            c.walls.iter().all(|w| w.ghosts == GhostKind::Fixed),
+            "fixed ghosts are the default"
+        );
+        apply_variant(&mut c, "images").unwrap();
+        assert!(c.walls.iter().all(|w| w.ghosts == GhostKind::Images));
+        apply_variant(&mut c, "fixed-ghosts").unwrap();
+        assert!(c.walls.iter().all(|w| w.ghosts == GhostKind::Fixed));
         for bad in ["h=0", "h=-1", "cfl=x", "speed=2", "gauss"] {
             let e = apply_variant(&mut c, bad).unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains("expected"), "{e}");
