@@ -45,6 +45,19 @@ impl<const D: usize> GhostGeometry<D> {
         self.volume.clear();
         self.mirror.clear();
     }
+    /// The ghosts `keep` accepts (by index), in order.
+    pub fn filtered(&self, keep: impl Fn(usize) -> bool) -> Self {
+        let mut out = Self::default();
+        for k in (0..self.len()).filter(|&k| keep(k)) {
+            out.pos.push(self.pos[k]);
+            out.interp.push(self.interp[k]);
+            out.wall_vel.push(self.wall_vel[k]);
+            out.wall_acc.push(self.wall_acc[k]);
+            out.volume.push(self.volume[k]);
+            out.mirror.push(self.mirror[k]);
+        }
+        out
+    }
     /// Keeps the first `n` ghosts.
     pub fn truncate(&mut self, n: usize) {
         self.pos.truncate(n);

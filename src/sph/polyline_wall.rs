@@ -87,17 +87,7 @@ impl PolylineWall {
     pub fn with_ghosts(mut self, kind: GhostKind) -> Self {
         self.kind = kind;
         if kind == GhostKind::Images {
-            let all = std::mem::take(&mut self.base);
-            for k in 0..all.len() {
-                if all.mirror[k] == Mirror::Point {
-                    self.base.pos.push(all.pos[k]);
-                    self.base.interp.push(all.interp[k]);
-                    self.base.wall_vel.push(all.wall_vel[k]);
-                    self.base.wall_acc.push(all.wall_acc[k]);
-                    self.base.volume.push(all.volume[k]);
-                    self.base.mirror.push(Mirror::Point);
-                }
-            }
+            self.base = self.base.filtered(|k| self.base.mirror[k] == Mirror::Point);
         }
         self
     }

@@ -111,11 +111,11 @@ pub struct GhostState<const D: usize> {
     pub geom: GhostGeometry<D>,
     /// Index of the boundary each ghost belongs to.
     pub owner: Vec<usize>,
-    /// For an image ghost ([`crate::sph::polyline_wall::GhostKind::Images`]), the fluid particle it mirrors;
-    /// `None` for a fixed ghost. The fixed ghosts come first.
-    pub image_of: Vec<Option<usize>>,
-    /// Number of fixed ghosts.
+    /// Number of fixed ghosts; they come first, the image ghosts
+    /// ([`crate::sph::polyline_wall::GhostKind::Images`]) after them.
     pub n_fixed: usize,
+    /// The fluid particle each image ghost mirrors: ghost `n_fixed + k` mirrors `image_source[k]`.
+    pub image_source: Vec<usize>,
     pub vel: Vec<SVector<f64, D>>,
     pub rho: Vec<f64>,
     pub p: Vec<f64>,
@@ -337,7 +337,6 @@ impl<const D: usize> Simulation<D> {
             g.geom.append(&tmp);
         }
         g.n_fixed = g.geom.len();
-        g.image_of = vec![None; g.n_fixed];
     }
 
     /// Replaces the image ghosts by those of the fluid at `pos` (after the fixed ones).
@@ -345,15 +344,12 @@ impl<const D: usize> Simulation<D> {
         let g = &mut self.ghosts;
         g.geom.truncate(g.n_fixed);
         g.owner.truncate(g.n_fixed);
-        g.image_of.truncate(g.n_fixed);
+        g.image_source.clear();
         let mut tmp = GhostGeometry::default();
-        let mut source = Vec::new();
         for (k, b) in self.boundaries.iter().enumerate() {
             tmp.clear();
-            source.clear();
-            b.images(t, pos, &mut tmp, &mut source);
+            b.images(t, pos, &mut tmp, &mut g.image_source);
             g.owner.extend(std::iter::repeat_n(k, tmp.len()));
-            g.image_of.extend(source.iter().map(|&j| Some(j)));
             g.geom.append(&tmp);
         }
     }
@@ -388,7 +384,7 @@ impl<const D: usize> Simulation<D> {
         let mass = &self.fluid.mass;
         let body = self.cfg.body_force;
         let geom = &self.ghosts.geom;
-        let image_of = &self.ghosts.image_of;
+        let (n_fixed, image_source) = (self.ghosts.n_fixed, &self.ghosts.image_source);
         let shepard = self.cfg.ghost_interpolation == GhostInterpolation::Shepard;
         let values: Vec<GhostValues<D>> = (0..geom.len())
             .into_par_iter()
@@ -436,7 +432,7 @@ impl<const D: usize> Simulation<D> {
                     };
                     let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
                     let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
-                    if let Some(j) = image_of[g] {
+                    if let Some(&j) = g.checked_sub(n_fixed).map(|k| &image_source[k]) {
                         // An image carries its particle's values, mirrored: free slip (7.2) and the Neumann
                         // condition (7.4) from the particle itself; the density gradient from the fit above.
                         let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
