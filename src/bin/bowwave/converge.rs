@@ -1,0 +1,95 @@
+//! `converge`: a case at several resolutions, with the observed order and a Richardson estimate.
+
+use crate::options::{checkpoint_policy, exit_if_halted};
+use anyhow::Context;
+use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
+use bowwave::studies::twodt_convergence;
+use clap::Args;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+#[derive(Args)]
+pub struct ConvergeArgs {
+    /// Built-in case name (see `bowwave cases`), case file, or `twodt` for a 2D+t run of --hull at --fr
+    /// at the spacings --dx (its quantities: the jet metrics at the plunge when every run plunges, and
+    /// the crest height at the end).
+    pub case: String,
+    /// Resolutions (reference length / dx), coarse to fine; a constant ratio allows the extrapolation.
+    #[arg(long, value_delimiter = ',', default_values_t = vec![20.0, 40.0, 80.0])]
+    pub res: Vec<f64>,
+    /// End time override (s).
+    #[arg(long)]
+    pub end: Option<f64>,
+    /// twodt: hull offsets file.
+    #[arg(long, default_value = "hulls/athena.csv")]
+    pub hull: PathBuf,
+    /// twodt: ship Froude number U/sqrt(gL).
+    #[arg(long, default_value_t = 0.5)]
+    pub fr: f64,
+    /// twodt: fine spacings dx/L, coarse to fine (the thesis's Athena study: 2.7e-4,1.9e-4,1.35e-4).
+    #[arg(long, value_delimiter = ',', default_values_t = vec![3e-3, 2e-3, 1.333e-3])]
+    pub dx: Vec<f64>,
+    /// twodt: where each run stops: plunge (plus a margin), transom, or an x/L value.
+    #[arg(long, default_value = "plunge")]
+    pub until: String,
+    /// twodt: x/L at which a run that has not plunged gives up.
+    #[arg(long)]
+    pub give_up_at: Option<f64>,
+    /// twodt: free-surface detection and plunge check every N steps.
+    #[arg(long, default_value_t = 10)]
+    pub detect_every: usize,
+    /// twodt: gather finished `bowwave twodt` runs (their folders, coarse to fine, comma separated)
+    /// instead of running the ladder.
+    #[arg(long, value_delimiter = ',')]
+    pub runs: Vec<PathBuf>,
+    /// twodt: minutes between checkpoints of the running spacing (0: none); run the same command again
+    /// to go on from it. Finished spacings (OUT/dx-*/converge_run.json) are reused.
+    #[arg(long, default_value_t = 10.0)]
+    pub checkpoint_every: f64,
+    /// twodt: stop after this many minutes of wall time with a checkpoint (exit status 3).
+    #[arg(long)]
+    pub wall_limit: Option<f64>,
+    /// Output folder for converge.csv and, for twodt, one folder per spacing (default out/converge-CASE).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+}
+
+impl ConvergeArgs {
+    /// Prints the convergence table and writes converge.csv.
+    pub fn run(self) -> anyhow::Result<()> {
+        let (conv, out) = if self.case == "twodt" && !self.runs.is_empty() {
+            let out = self
+                .out
+                .unwrap_or_else(|| PathBuf::from("out").join("converge-twodt-runs"));
+            (twodt_convergence::converge_finished(&self.runs)?, out)
+        } else if self.case == "twodt" {
+            let offsets = HullOffsets::read(&self.hull)?;
+            let surface = Arc::new(HullSurface::new(&offsets));
+            let fr = self.fr;
+            let base = bowwave::twodt::scene::TwoDtConfig {
+                fr,
+                until: self.until.parse().map_err(anyhow::Error::msg)?,
+                give_up_at: self.give_up_at,
+                detect_every: self.detect_every,
+                ..Default::default()
+            };
+            let out = self
+                .out
+                .unwrap_or_else(|| PathBuf::from("out").join(format!("converge-twodt-{}-fr{fr}", offsets.meta.name)));
+            let policy = checkpoint_policy(self.checkpoint_every, self.wall_limit, true)?;
+            let conv = twodt_convergence::converge_twodt(surface, &base, &self.dx, &out, &policy, true);
+            (exit_if_halted(conv)?, out)
+        } else {
+            let c = bowwave::cases::load(&self.case)?;
+            let out = self
+                .out
+                .unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{}", c.name)));
+            (bowwave::convergence::converge(&c, &self.res, self.end)?, out)
+        };
+        print!("{}", conv.report());
+        std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+        bowwave::io::atomic::write_atomic(&out.join("converge.csv"), conv.csv().as_bytes())?;
+        println!("table in {}", out.join("converge.csv").display());
+        Ok(())
+    }
+}

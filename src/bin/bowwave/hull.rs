@@ -1,0 +1,167 @@
+//! `hull`: check, import, generate, draw a hull file, or write the Wigley hull.
+
+use clap::Subcommand;
+use std::path::PathBuf;
+
+#[derive(Subcommand)]
+pub enum HullAction {
+    /// Hydrostatics from the spline surface (displacement, Cb, Cp, Cm, Cwp, LCB, girths) beside the declared
+    /// particulars; warns where they differ by more than 2 %.
+    Check {
+        /// Hull offsets file (CSV, see docs/hull-format.md).
+        file: PathBuf,
+    },
+    /// Slice a triangulated hull (STL, metres, z = 0 at the waterline) at stations and write a hull file.
+    Import {
+        /// The STL file (ASCII or binary).
+        stl: PathBuf,
+        /// Hull name for the metadata.
+        #[arg(long)]
+        name: String,
+        /// Number of equally spaced stations between the ends (exclusive).
+        #[arg(long, default_value_t = 21)]
+        stations: usize,
+        /// Reference length L (m); default: the mesh's length along x.
+        #[arg(long)]
+        length: Option<f64>,
+        /// The stem is at the largest x of the mesh (default: the smallest).
+        #[arg(long)]
+        stem_at_max_x: bool,
+        /// The hull ends in a transom.
+        #[arg(long)]
+        transom: bool,
+        /// Output hull file.
+        #[arg(long)]
+        out: PathBuf,
+    },
+    /// Generate a labelled approximation (athena, alliance) from the parametric family, calibrated to its
+    /// particulars (Cb by bisection on the midship section shape), and write it as a hull file.
+    Generate {
+        /// athena or alliance.
+        hull: String,
+        #[arg(long, default_value_t = 41)]
+        stations: usize,
+        #[arg(long, default_value_t = 31)]
+        points: usize,
+        /// Output file (default hulls/NAME.csv).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Override a generator parameter, `key=value` (repeatable; keys as in the file's `# generator:` line,
+        /// e.g. `flare=15` or `p_entrance=3`) for sensitivity studies. The hull is then labelled a variant.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+    },
+    /// Draw a hull: body plan, profile, waterline plan and w_n along the girth (PNG).
+    Show {
+        /// Hull offsets file.
+        file: PathBuf,
+        /// Output folder.
+        #[arg(long, default_value = "out/hull")]
+        out: PathBuf,
+    },
+    /// Write the parabolic Wigley hull (L/B = 5, L/D = 10, wall-sided above the waterline) as a hull file.
+    Wigley {
+        /// Number of stations, stem and stern included.
+        #[arg(long, default_value_t = 21)]
+        stations: usize,
+        /// Reference length L (m).
+        #[arg(long, default_value_t = 100.0)]
+        length: f64,
+        /// Output file.
+        #[arg(long, default_value = "hulls/wigley.csv")]
+        out: PathBuf,
+    },
+}
+
+impl HullAction {
+    pub fn run(self) -> anyhow::Result<()> {
+        match self {
+            HullAction::Check { file } => {
+                let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;
+                let (text, warnings) = bowwave::geometry::report::check_report(&h);
+                print!("{text}");
+                if warnings > 0 {
+                    eprintln!("{warnings} warning(s)");
+                }
+            }
+            HullAction::Import {
+                stl,
+                name,
+                stations,
+                length,
+                stem_at_max_x,
+                transom,
+                out,
+            } => {
+                anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");
+                let xs: Vec<f64> = (0..stations).map(|i| (i as f64 + 0.5) / stations as f64).collect();
+                let opts = bowwave::geometry::stl::ImportOptions {
+                    name,
+                    stations: xs,
+                    length_m: length,
+                    stem_at_max_x,
+                    transom,
+                };
+                let h = bowwave::geometry::stl::import_stl(&stl, &opts)?;
+                let text = h.to_csv();
+                bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
+                bowwave::io::atomic::write_atomic(&out, text.as_bytes())?;
+                println!("wrote {} ({} stations)", out.display(), h.stations.len());
+            }
+            HullAction::Generate {
+                hull,
+                stations,
+                points,
+                out,
+                set,
+            } => {
+                use bowwave::geometry::parametric;
+                let mut spec = match hull.as_str() {
+                    "athena" => parametric::athena(),
+                    "alliance" => parametric::alliance(),
+                    other => anyhow::bail!("hull `{other}`: expected `athena` or `alliance`"),
+                };
+                if !set.is_empty() {
+                    spec = spec.with_overrides(&set)?;
+                }
+                anyhow::ensure!(
+                    stations >= 4 && points >= 3,
+                    "--stations >= 4 and --points >= 3 expected"
+                );
+                let cb = spec.calibrate(stations, points);
+                let h = spec.offsets(stations, points);
+                let out = out.unwrap_or_else(|| PathBuf::from("hulls").join(format!("{hull}.csv")));
+                bowwave::io::atomic::write_atomic(&out, h.to_csv().as_bytes())?;
+                println!(
+                    "wrote {} (Cb = {cb:.4}, target {:.4}, n_mid = {:.3})",
+                    out.display(),
+                    spec.target_cb,
+                    spec.n_mid
+                );
+            }
+            HullAction::Show { file, out } => {
+                let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;
+                let s = bowwave::geometry::surface::HullSurface::new(&h);
+                for f in bowwave::geometry::drawings::draw(&s, &out)? {
+                    println!("{}", f.display());
+                }
+            }
+            HullAction::Wigley { stations, length, out } => {
+                anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");
+                anyhow::ensure!(
+                    length > 0.0 && length.is_finite(),
+                    "--length: expected a positive length in metres"
+                );
+                let spec = bowwave::geometry::wigley::WigleySpec {
+                    stations,
+                    length_m: length,
+                    ..Default::default()
+                };
+                let h = bowwave::geometry::wigley::wigley(&spec);
+                bowwave::io::atomic::write_atomic(&out, h.to_csv().as_bytes())?;
+                println!("wrote {}", out.display());
+            }
+        }
+        Ok(())
+    }
+}

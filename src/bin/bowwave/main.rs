@@ -1,0 +1,98 @@
+//! The `bowwave` command line: a thin layer over the library. Each file of this folder holds the options
+//! of one group of subcommands (clap's `Args`, whose doc comments are the `--help` text) and the few lines
+//! that hand them to the library.
+
+mod bench;
+mod case;
+mod chart;
+mod converge;
+mod hull;
+mod options;
+mod study;
+mod twodt;
+
+use anyhow::Context;
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(name = "bowwave", version, about = "δ-SPH simulation of breaking bow waves (2D+t), with its validation cases", long_about = None)]
+struct Cli {
+    /// Number of worker threads (default: all cores). Results are bit-identical for any thread count.
+    #[arg(long, global = true)]
+    threads: Option<usize>,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a case (built-in name or TOML file) and write its time series, VTK snapshots and plots.
+    Run(case::RunArgs),
+    /// Run validation cases and print their errors against analytic solutions and published data;
+    /// exits non-zero when a tolerance is missed.
+    Validate(case::ValidateArgs),
+    /// 2D+t bow-wave run: one hull at one Froude number, from the stem to the plunge of the bow wave (or
+    /// further), with the plunge point and jet metrics (metrics.csv/.json), series.csv, eta.csv (free-surface
+    /// elevation η(y) at each output x/L, for wave-pattern maps), PNG snapshots at the plunge and optional VTK.
+    Twodt(twodt::TwodtArgs),
+    /// Convergence of a case (built-in name or TOML file): runs it at several resolutions and prints each
+    /// validated quantity's value and error per resolution, the observed order (thesis appendix C) and a
+    /// Richardson estimate with an uncertainty band; writes converge.csv.
+    Converge(converge::ConvergeArgs),
+    /// Charts of speed against accuracy and of stability, from runs of a validation case (PNG + CSV).
+    Chart {
+        #[command(subcommand)]
+        kind: chart::ChartKind,
+    },
+    /// Froude sweep: run every case of a study file (TOML, see docs/studies.md) that is not finished yet, then
+    /// gather them into jets.csv, comparison.csv, report.md, figures and manifest.json. Resumable: finished
+    /// cases are recorded and skipped; an interruption loses at most the cases in progress.
+    Study(study::StudyArgs),
+    /// The wedge check of the 2D+t machinery: a hull of wedge sections sinking linearly in x against a rigid
+    /// wedge entering at the same speed, both against Wagner theory; prints pile-up height and force.
+    Wedge(twodt::WedgeArgs),
+    /// Measure throughput (particle-steps per second) on the dam break.
+    Bench(bench::BenchArgs),
+    /// Hull geometry: check a hull file, import one from STL, generate the Athena or Alliance approximation,
+    /// draw a hull, or write the Wigley hull.
+    Hull {
+        #[command(subcommand)]
+        action: hull::HullAction,
+    },
+    /// (Internal) one benchmark configuration, printed as JSON; used by `bench`.
+    #[command(hide = true)]
+    BenchOne(bench::BenchOneArgs),
+    /// List the built-in cases, or print one as TOML to start a case file from.
+    Cases(case::CasesArgs),
+}
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("error: {e:#}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> anyhow::Result<()> {
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
+    let cli = Cli::parse();
+    if let Some(n) = cli.threads {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global()
+            .context("setting the thread count")?;
+    }
+    match cli.command {
+        Command::Run(a) => a.run(),
+        Command::Validate(a) => a.run(),
+        Command::Twodt(a) => a.run(),
+        Command::Converge(a) => a.run(),
+        Command::Chart { kind } => kind.run(),
+        Command::Study(a) => a.run(),
+        Command::Wedge(a) => a.run(),
+        Command::Bench(a) => a.run(),
+        Command::Hull { action } => action.run(),
+        Command::BenchOne(a) => a.run(),
+        Command::Cases(a) => a.run(),
+    }
+}

@@ -1,0 +1,52 @@
+//! Options and exit conventions shared by several subcommands.
+
+/// `--ghosts`: the CLI's names for [`bowwave::sph::polyline_wall::GhostKind`].
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum GhostsArg {
+    Fixed,
+    Images,
+}
+
+impl From<GhostsArg> for bowwave::sph::polyline_wall::GhostKind {
+    fn from(g: GhostsArg) -> Self {
+        match g {
+            GhostsArg::Fixed => Self::Fixed,
+            GhostsArg::Images => Self::Images,
+        }
+    }
+}
+
+/// A duration given in minutes on the command line: `None` for 0; an error naming the option otherwise.
+fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> {
+    if !(m.is_finite() && m >= 0.0) {
+        anyhow::bail!("{option} {m}: expected a number of minutes, 0 or more");
+    }
+    Ok((m > 0.0).then(|| std::time::Duration::from_secs_f64(60.0 * m)))
+}
+
+/// The checkpoint policy of `--checkpoint-every` and `--wall-limit` (minutes), shared by twodt, converge and
+/// study.
+pub fn checkpoint_policy(
+    every: f64,
+    wall_limit: Option<f64>,
+    resume: bool,
+) -> anyhow::Result<bowwave::twodt::checkpoint::CheckpointPolicy> {
+    Ok(bowwave::twodt::checkpoint::CheckpointPolicy {
+        every: minutes("--checkpoint-every", every)?,
+        resume,
+        wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
+        halt_at_step: None,
+    })
+}
+
+/// A 2D+t run stopped on purpose with its state saved ([`bowwave::twodt::checkpoint::Halted`]) is not a
+/// failure: says where it stopped and exits with status 3, which tells a batch script to submit it again.
+pub fn exit_if_halted<T>(r: anyhow::Result<T>) -> anyhow::Result<T> {
+    if let Err(e) = &r {
+        if let Some(h) = e.downcast_ref::<bowwave::twodt::checkpoint::Halted>() {
+            eprintln!("{h}");
+            std::process::exit(3);
+        }
+    }
+    r
+}

@@ -1,0 +1,105 @@
+//! `study`: a Froude sweep from a study file, resumable, gathered into tables, figures and a report.
+
+use crate::options::checkpoint_policy;
+use bowwave::studies;
+use clap::Args;
+use std::path::PathBuf;
+
+#[derive(Args)]
+pub struct StudyArgs {
+    /// Study file, e.g. studies/quick.toml.
+    pub file: PathBuf,
+    /// Output folder (default out/study-NAME).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Run only case N (1-based, in the order of `froude`), e.g. a batch array index; then collect
+    /// whatever is finished.
+    #[arg(long)]
+    pub case: Option<usize>,
+    /// Do not run anything: gather the finished cases into the tables and figures.
+    #[arg(long)]
+    pub collect: bool,
+    /// Recompute finished cases.
+    #[arg(long)]
+    pub force: bool,
+    /// Print each case's particle count, estimated steps and run time, and run nothing.
+    #[arg(long)]
+    pub dry_run: bool,
+    /// Minutes of wall time between checkpoints of the running case (CASE/checkpoint.bin; 0: none): an
+    /// interrupted study loses at most this much of the case in progress, and goes on from it when run
+    /// again (to the same bits). `--force` ignores checkpoints too.
+    #[arg(long, default_value_t = 10.0)]
+    pub checkpoint_every: f64,
+    /// Stop the case in progress after this many minutes of wall time, saving a checkpoint (a batch job's
+    /// time limit); run the same command again to go on.
+    #[arg(long)]
+    pub wall_limit: Option<f64>,
+    /// Cases run at the same time, each with threads/jobs worker threads (default 1: every thread inside
+    /// one case, measured faster on 2 cores, see docs/studies.md).
+    #[arg(long, default_value_t = 1)]
+    pub jobs: usize,
+    /// No progress bars.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+impl StudyArgs {
+    /// Runs the unfinished cases (or only `--case N`), then gathers every finished one and prints the report.
+    pub fn run(self) -> anyhow::Result<()> {
+        let study = studies::study_file::Study::read(&self.file)?;
+        let out = self
+            .out
+            .unwrap_or_else(|| PathBuf::from("out").join(format!("study-{}", study.spec.name)));
+        if self.dry_run {
+            print_dry_run(&study)?;
+            return Ok(());
+        }
+        if !self.collect {
+            let opts = studies::runner::StudyOptions {
+                out_dir: out.clone(),
+                force: self.force,
+                case: self.case,
+                jobs: self.jobs,
+                threads: rayon::current_num_threads(),
+                progress: !self.quiet,
+                // `resume` is set per case by the runner (not with --force).
+                checkpoint: checkpoint_policy(self.checkpoint_every, self.wall_limit, true)?,
+            };
+            let ran = studies::runner::run_cases(&study, &opts)?;
+            println!("{ran} case(s) run");
+        }
+        let n = studies::collect_all(&study, &out)?;
+        println!(
+            "{n} of {} case(s) finished; tables, report and figures in {}",
+            study.cases.len(),
+            out.display()
+        );
+        print!("{}", std::fs::read_to_string(out.join("report.md")).unwrap_or_default());
+        Ok(())
+    }
+}
+
+/// `--dry-run`: each case's particle count, estimated steps and run time.
+fn print_dry_run(study: &studies::study_file::Study) -> anyhow::Result<()> {
+    let est = studies::runner::dry_run(study)?;
+    println!(
+        "study {} ({} cases), {}",
+        study.spec.name,
+        est.len(),
+        study.hull_path.display()
+    );
+    println!("case  Fr      dx/L       particles  est. steps  est. time (s)");
+    for e in &est {
+        println!(
+            "{:4}  {:<6}  {:.3e}  {:9}  {:10.0}  {:13.0}",
+            e.spec.index, e.spec.fr, e.spec.dx, e.particles, e.steps, e.seconds
+        );
+    }
+    println!(
+        "total {:.0} s at {:.1e} particle-steps/s (the measured 2D+t throughput on 2 cores; a plunge search \
+         is counted to its give-up point, the worst case)",
+        est.iter().map(|e| e.seconds).sum::<f64>(),
+        studies::runner::REFERENCE_THROUGHPUT
+    );
+    Ok(())
+}
