@@ -1,0 +1,208 @@
+//! Validation of the built-in cases against analytic solutions and published data: each check gives our
+//! value, the reference, the error and the tolerance it must meet. `bowwave validate` runs them at full
+//! resolution; the tests in `tests/` run the same checks at coarse resolution.
+
+use crate::cases::{
+    self,
+    run::{run, RunOptions, RunResult},
+    CaseFile,
+};
+use crate::sph::polyline_wall::GhostKind;
+use std::path::Path;
+
+mod dam_break;
+mod drops;
+mod hydrostatic;
+mod jets;
+mod martin_moyce;
+mod plots;
+
+pub use dam_break::{
+    cavity_summary, dam_break, first_rise, impact_time, moving_average, CAVITY_CLOSURE_T_STAR, IMPACT_LEVEL,
+    IMPACT_SMOOTHING,
+};
+pub use drops::{elliptic_drop, oscillating_drop};
+pub use hydrostatic::{hydrostatic, near_surface_pressure_error};
+pub use jets::{jet_floor, jet_plate, jet_wall, taylor_jet_cp, JET_PLATE_CP_TOLERANCE, JET_WALL_STEADY_FROM};
+pub use martin_moyce::martin_moyce;
+pub use plots::plots;
+
+/// One validated quantity.
+#[derive(Clone, Debug)]
+pub struct Check {
+    pub case: String,
+    pub quantity: String,
+    pub value: f64,
+    pub reference: f64,
+    /// The error measure (defined per check in `quantity`).
+    pub error: f64,
+    /// `None`: reported only.
+    pub tolerance: Option<f64>,
+}
+
+impl Check {
+    pub fn pass(&self) -> bool {
+        self.error.is_finite() && self.tolerance.is_none_or(|t| self.error <= t)
+    }
+}
+
+fn check(r: &RunResult, quantity: &str, value: f64, reference: f64, error: f64, tolerance: Option<f64>) -> Check {
+    Check {
+        case: format!(
+            "{} (res {:.0}{})",
+            r.case.name,
+            r.case.scales.length / r.dx,
+            if r.case.walls.iter().any(|w| w.ghosts == GhostKind::Images) {
+                ", images"
+            } else {
+                ""
+            }
+        ),
+        quantity: quantity.into(),
+        value,
+        reference,
+        error,
+        tolerance,
+    }
+}
+
+fn col(r: &RunResult, name: &str) -> Vec<f64> {
+    r.series
+        .column(name)
+        .unwrap_or_else(|| panic!("series column `{name}` missing"))
+}
+
+/// Resolution used by `bowwave validate` (full) for each built-in case.
+pub fn full_resolution(case: &str) -> Option<f64> {
+    match case {
+        "hydrostatic" => Some(40.0),
+        "elliptic-drop" => Some(50.0),
+        "oscillating-drop" => Some(40.0),
+        "dam-break-mm" => Some(50.0),
+        "dam-break" => Some(80.0),
+        "jet-wall" | "jet-plate" | "jet-floor" => Some(20.0),
+        _ => None,
+    }
+}
+
+/// The checks of a built-in case, if it has any.
+pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
+    Some(match r.case.name.as_str() {
+        "hydrostatic" => hydrostatic(r),
+        "elliptic-drop" => elliptic_drop(r),
+        "oscillating-drop" => oscillating_drop(r),
+        "dam-break-mm" => martin_moyce(r),
+        "dam-break" => dam_break(r),
+        "jet-wall" => jet_wall(r),
+        "jet-plate" => jet_plate(r),
+        "jet-floor" => jet_floor(r),
+        _ => return None,
+    })
+}
+
+/// Prints a table of checks.
+pub fn print_checks(checks: &[Check]) {
+    println!(
+        "{:<26} {:<72} {:>11} {:>11} {:>10} {:>9}  result",
+        "case", "quantity", "ours", "reference", "error", "tol."
+    );
+    for c in checks {
+        let tol = c.tolerance.map(|t| format!("{t:.3}")).unwrap_or_else(|| "-".into());
+        let res = match (c.tolerance, c.pass()) {
+            (None, _) => "report",
+            (Some(_), true) => "PASS",
+            (Some(_), false) => "FAIL",
+        };
+        println!(
+            "{:<26} {:<72} {:>11.5} {:>11.5} {:>10.4e} {:>9}  {res}",
+            c.case, c.quantity, c.value, c.reference, c.error, tol
+        );
+    }
+}
+
+/// `bowwave run`: runs a case with progress and outputs, prints where they went and the case's checks.
+/// Returns the process exit code (2 after a blow-up).
+pub fn run_and_report(case: &CaseFile, out: &Path, opts: RunOptions) -> anyhow::Result<i32> {
+    let end = opts.end_time;
+    let opts = RunOptions {
+        out_dir: Some(out.to_path_buf()),
+        ..opts
+    };
+    let r = run(case, &opts)?;
+    let mut files = r.files.clone();
+    files.extend(plots(&r, out)?);
+    println!(
+        "{}: {} fluid particles, dx = {:.4e} m, {} steps in {:.1} s wall ({:.3e} particle-steps/s), {} wall-penetration corrections",
+        case.name, r.n_fluid, r.dx, r.steps, r.wall_seconds, r.particle_steps_per_second(), r.sim.wall_corrections
+    );
+    if let Some(line) = cavity_summary(&r) {
+        println!("{line}");
+    }
+    if let Some(c) = checks(&r) {
+        if r.blowup.is_none() && end.is_none() {
+            print_checks(&c);
+        }
+    }
+    println!("outputs:");
+    for f in &files {
+        println!("  {}", f.display());
+    }
+    if let Some(b) = &r.blowup {
+        eprintln!("error: the run blew up: {b}");
+        return Ok(2);
+    }
+    Ok(0)
+}
+
+/// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
+///
+/// `ghosts`: if given, the ghost kind of every wall of every case (as `bowwave validate --ghosts`).
+pub fn validate_cli(
+    case: Option<&str>,
+    res: Option<f64>,
+    out: Option<&Path>,
+    ghosts: Option<GhostKind>,
+) -> anyhow::Result<bool> {
+    let names: Vec<&str> = match case {
+        Some(n) => vec![n],
+        None => cases::builtin::builtin_names(),
+    };
+    let mut all = vec![];
+    let mut ok = true;
+    for n in names {
+        let mut c = cases::load(n)?;
+        if let Some(kind) = ghosts {
+            c.set_ghosts(kind);
+        }
+        let res = res.or(full_resolution(n));
+        eprintln!(
+            "validating {n} at resolution {:.0} ...",
+            res.unwrap_or(c.scales.resolution)
+        );
+        let r = run(
+            &c,
+            &RunOptions {
+                res,
+                progress: true,
+                ..Default::default()
+            },
+        )?;
+        if let Some(b) = &r.blowup {
+            eprintln!("{n}: blew up: {b}");
+            ok = false;
+            continue;
+        }
+        if let Some(dir) = out {
+            r.series.write(&dir.join(format!("{n}_series.csv")))?;
+            plots(&r, dir)?;
+        }
+        if let Some(line) = cavity_summary(&r) {
+            eprintln!("{n}: {line}");
+        }
+        let c = checks(&r).unwrap_or_default();
+        ok &= c.iter().all(|c| c.pass());
+        all.extend(c);
+    }
+    print_checks(&all);
+    Ok(ok)
+}

@@ -1,0 +1,198 @@
+//! Plots of a validation run: energies, and per case its probes or semi-axes against the references.
+
+use super::col;
+use super::jets::{jet_wall_means, taylor_jet_cp};
+use super::martin_moyce::mm_column_height;
+use crate::cases::run::RunResult;
+use crate::io::plot::{line_plot, Series, Style};
+use crate::reference::{self, named};
+use std::path::Path;
+
+/// Plots of a run: energies, and per case its probes or semi-axes against the references.
+pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf>> {
+    let mut files = vec![];
+    let ts = col(r, "t_star");
+    let xy = |a: &[f64], b: &[f64]| a.iter().copied().zip(b.iter().copied()).collect::<Vec<_>>();
+    let p = dir.join(format!("{}_energy.png", r.case.name));
+    line_plot(
+        &p,
+        &format!("{}: mechanical energy change", r.case.name),
+        "t*",
+        "(E_M - E_M0) / scale",
+        &[Series {
+            name: "dE_M".into(),
+            points: xy(&ts, &col(r, "de_mechanical_rel")),
+            style: Style::Line,
+        }],
+    )?;
+    files.push(p);
+    match r.case.name.as_str() {
+        "dam-break" => {
+            let res = r.case.scales.length / r.dx;
+            for (probe, mref, bref) in [("P1", "marrone_p1", "buchner_p1"), ("P2", "marrone_p2", "buchner_p2")] {
+                let m = reference::load(mref);
+                let b = reference::load(bref);
+                let mut series = vec![Series {
+                    name: format!("bowwave H/dx={res:.0}"),
+                    points: xy(&ts, &col(r, &format!("pstar_{probe}"))),
+                    style: Style::Line,
+                }];
+                for n in [40, 80, 320] {
+                    let c = format!("p_over_rho_g_H_deltaSPH_H_over_dx_{n}");
+                    series.push(Series {
+                        name: format!("Marrone 2011 H/dx={n}"),
+                        points: xy(&reference::col(&m, 0), &named(&m, &c)),
+                        style: Style::Line,
+                    });
+                }
+                series.push(Series {
+                    name: "Buchner 2002 exp.".into(),
+                    points: xy(&reference::col(&b, 0), &reference::col(&b, 1)),
+                    style: Style::Markers,
+                });
+                let p = dir.join(format!("dam-break_{probe}.png"));
+                line_plot(
+                    &p,
+                    &format!("Dam break: pressure at {probe}"),
+                    "t sqrt(g/H)",
+                    "p / (rho g H)",
+                    &series,
+                )?;
+                files.push(p);
+            }
+        }
+        "jet-wall" | "jet-plate" | "jet-floor" => {
+            // Mean Cp of each sensor over the steady window, and Taylor's curve.
+            let b = r.case.scales.length;
+            let sph: Vec<(f64, f64)> = jet_wall_means(r).2.iter().map(|&(y, cp, _)| (y, cp)).collect();
+            let theory: Vec<(f64, f64)> = (0..=160)
+                .map(|k| {
+                    let y_over_h = k as f64 * 0.01;
+                    (y_over_h, taylor_jet_cp(y_over_h * 2.0 * b, 2.0 * b))
+                })
+                .collect();
+            let p = dir.join(format!("{}_cp.png", r.case.name));
+            let title = match r.case.name.as_str() {
+                "jet-plate" => "Plane jet on a flat wall: pressure along the wall",
+                "jet-floor" => "Two jets meeting over a floor: pressure on the symmetry plane",
+                _ => "Plane jet into a floor-wall corner: pressure along the wall",
+            };
+            line_plot(
+                &p,
+                title,
+                "y / h (h: full jet width)",
+                "Cp = p / (rho U^2 / 2)",
+                &[
+                    Series {
+                        name: "bowwave, mean over t >= 0.4 s".into(),
+                        points: sph,
+                        style: Style::Markers,
+                    },
+                    Series {
+                        name: "free-streamline solution (Taylor 1966)".into(),
+                        points: theory,
+                        style: Style::Line,
+                    },
+                ],
+            )?;
+            files.push(p);
+        }
+        "dam-break-mm" => {
+            let rt = reference::load("martin_moyce_front");
+            let ko = reference::load("koshizuka_oka_front");
+            let big_t: Vec<f64> = ts.iter().map(|t| t * 2f64.sqrt()).collect();
+            let p = dir.join("dam-break-mm_front.png");
+            line_plot(
+                &p,
+                "Martin-Moyce surge front (n^2 = 2)",
+                "T = n t sqrt(g/a)",
+                "x / a",
+                &[
+                    Series {
+                        name: "bowwave".into(),
+                        points: xy(&big_t, &col(r, "front_star")),
+                        style: Style::Line,
+                    },
+                    Series {
+                        name: "Martin & Moyce 1952, Table 2".into(),
+                        points: xy(&reference::col(&rt, 0), &reference::col(&rt, 1)),
+                        style: Style::Markers,
+                    },
+                    Series {
+                        name: "Koshizuka & Oka 1996".into(),
+                        points: xy(&reference::col(&ko, 0), &reference::col(&ko, 1)),
+                        style: Style::Markers,
+                    },
+                ],
+            )?;
+            files.push(p);
+            let hr = reference::load("martin_moyce_height");
+            let h = mm_column_height(r);
+            let p = dir.join("dam-break-mm_column_height.png");
+            line_plot(
+                &p,
+                "Martin-Moyce residual column height (n^2 = 2)",
+                "tau = t sqrt(g/a)",
+                "h / (n^2 a)",
+                &[
+                    Series {
+                        name: "bowwave (0.1a from the back wall)".into(),
+                        points: xy(&ts, &h),
+                        style: Style::Line,
+                    },
+                    Series {
+                        name: "Martin & Moyce 1952, Table 6".into(),
+                        points: xy(&reference::col(&hr, 0), &reference::col(&hr, 1)),
+                        style: Style::Markers,
+                    },
+                ],
+            )?;
+            files.push(p);
+        }
+        "elliptic-drop" | "oscillating-drop" => {
+            let (file, tc, ac) = if r.case.name == "elliptic-drop" {
+                ("elliptic_drop", "t_s", "a_semi_axis_x_m")
+            } else {
+                ("oscillating_drop", "t", "A_semi_axis_x")
+            };
+            let rt = reference::load(file);
+            let p = dir.join(format!("{}_semi_axis.png", r.case.name));
+            line_plot(
+                &p,
+                &format!("{}: semi-axis along x", r.case.name),
+                "t (s)",
+                "a (m)",
+                &[
+                    Series {
+                        name: "bowwave (2 sqrt<x^2>)".into(),
+                        points: xy(&col(r, "t"), &col(r, "semi_axis_x")),
+                        style: Style::Line,
+                    },
+                    Series {
+                        name: "ODE solution".into(),
+                        points: xy(&named(&rt, tc), &named(&rt, ac)),
+                        style: Style::Line,
+                    },
+                ],
+            )?;
+            files.push(p);
+        }
+        "hydrostatic" => {
+            let p = dir.join("hydrostatic_bottom_pressure.png");
+            line_plot(
+                &p,
+                "Hydrostatic tank: bottom pressure",
+                "t sqrt(g/H)",
+                "p / (rho g H)",
+                &[Series {
+                    name: "bottom probe".into(),
+                    points: xy(&ts, &col(r, "pstar_bottom")),
+                    style: Style::Line,
+                }],
+            )?;
+            files.push(p);
+        }
+        _ => {}
+    }
+    Ok(files)
+}
