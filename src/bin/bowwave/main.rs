@@ -96,3 +96,50 @@ fn run() -> anyhow::Result<()> {
         Command::Cases(a) => a.run(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Cli;
+    use clap::CommandFactory;
+
+    /// clap's own consistency check of the whole command tree: no two options share a name or short flag,
+    /// every default value parses, every subcommand is reachable (it panics with the offending argument).
+    #[test]
+    fn command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    /// The README's two commands and the study subcommand's resume options parse as documented.
+    #[test]
+    fn documented_invocations_parse() {
+        for args in [
+            &["bowwave", "study", "studies/quick.toml"][..],
+            &["bowwave", "run", "dam-break", "--res", "40", "--ghosts", "images"],
+            &[
+                "bowwave",
+                "twodt",
+                "--fr",
+                "0.64",
+                "--diffusion",
+                "molteni-colagrossi",
+                "--packing",
+                "off",
+            ],
+            &[
+                "bowwave",
+                "study",
+                "studies/athena.toml",
+                "--case",
+                "2",
+                "--wall-limit",
+                "150",
+            ],
+            &["bowwave", "--threads", "1", "validate", "dam-break"],
+        ] {
+            if let Err(e) = <Cli as clap::Parser>::try_parse_from(args) {
+                panic!("{args:?}: {e}");
+            }
+        }
+        assert!(<Cli as clap::Parser>::try_parse_from(["bowwave", "twodt", "--packing", "maybe"]).is_err());
+    }
+}
