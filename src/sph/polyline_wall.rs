@@ -177,7 +177,6 @@ impl Boundary<2> for PolylineWall {
 /// solid-side normal there. Points whose nearest wall point is a free end of the polyline are never inside
 /// (they went round the wall's end, not through it).
 pub fn solid_side(points: &[V2], side: FluidSide, x: &V2, band: f64) -> Option<(V2, V2)> {
-    let normals = solid_normals(points, side);
     let mut best: Option<(f64, usize, f64)> = None; // (distance², segment, parameter)
     for (k, w) in points.windows(2).enumerate() {
         let ab = w[1] - w[0];
@@ -192,6 +191,8 @@ pub fn solid_side(points: &[V2], side: FluidSide, x: &V2, band: f64) -> Option<(
     if d2 > band * band {
         return None;
     }
+    // Only a point within the band needs the normals (this runs for every particle at every step).
+    let normals = solid_normals(points, side);
     let nseg = points.len() - 1;
     let foot = points[k] + (points[k + 1] - points[k]) * t;
     let n = if t <= 0.0 {

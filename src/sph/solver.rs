@@ -425,11 +425,6 @@ impl<const D: usize> Simulation<D> {
                     let dist = r_gi.norm();
                     let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
                     let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
-                    let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
-                    let u_g = match geom.mirror[g] {
-                        Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
-                        Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
-                    };
                     let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
                     let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
                     if let Some(&j) = g.checked_sub(n_fixed).map(|k| &image_source[k]) {
@@ -440,6 +435,11 @@ impl<const D: usize> Simulation<D> {
                             ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
                         return (u, eos.density(p), p, grad_g, mass[j] / rho[j]);
                     }
+                    let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
+                    let u_g = match geom.mirror[g] {
+                        Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
+                        Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
+                    };
                     (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g])
                 },
             )

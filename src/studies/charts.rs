@@ -15,7 +15,8 @@ use std::path::{Path, PathBuf};
 /// A method variant, by name: `delta-sph` (the default scheme), `molteni` (Molteni–Colagrossi diffusion (5.4),
 /// no gradient correction), `wcsph` (no density diffusion), `wendland` (Wendland C2 kernel, h = 2 dx),
 /// `pc` (predictor–corrector at its default CFL), `table`/`exact-kernel` (tabulated or exact kernel gradient),
-/// `images`/`fixed-ghosts` (every wall's straight sides as image ghosts, or the fixed lattice), or `alpha=A`, `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter.
+/// `images`/`fixed-ghosts` (every wall's straight sides as image ghosts, or the fixed lattice), or `alpha=A`,
+/// `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter.
 pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
     let ghosts = match name {
         "images" => Some(GhostKind::Images),
