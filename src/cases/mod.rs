@@ -1,6 +1,7 @@
 //! Cases: the TOML description of a run, the built-in cases, their set-up as a simulation, and the driver
 //! that runs one and writes its outputs.
 
+pub mod box_tank;
 pub mod builtin;
 pub mod case_file;
 pub mod cavity_probe;

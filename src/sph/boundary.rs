@@ -28,6 +28,9 @@ pub enum Mirror {
     #[default]
     Plane,
     Point,
+    /// Through the coordinate planes whose bits are set (an edge of an axis-aligned 3D box: reflected along
+    /// the two axes the ghost is beyond, kept along the edge). Faces are `Plane`, vertices `Point`.
+    Axes(u8),
 }
 
 impl<const D: usize> GhostGeometry<D> {

@@ -3,6 +3,7 @@
 
 pub mod body_force;
 pub mod boundary;
+pub mod box_wall;
 pub mod deforming_wall;
 pub mod diagnostics;
 pub mod eos;

@@ -439,6 +439,7 @@ impl<const D: usize> Simulation<D> {
                     let u_g = match geom.mirror[g] {
                         Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
                         Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
+                        Mirror::Axes(mask) => ghost_conditions::axes_mirror_velocity(&u_i, &wall_vel, mask),
                     };
                     (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g])
                 },

@@ -5,6 +5,8 @@
 //!   u_G = u_I − 2 [(u_I − u_B)·n] n, so that ½(u_G + u_I)·n = u_B·n;
 //! * at a corner (central symmetry, Fig. 7.3) free slip on both sides leaves only the wall's velocity:
 //!   u_G = 2 u_B − u_I;
+//! * on an edge of an axis-aligned 3D box, free slip on both faces: the velocity relative to the wall reversed
+//!   along the two axes the ghost is beyond, kept along the edge;
 //! * pressure, Neumann condition (7.4)–(7.5) for a wall in translation (dn/dt = 0):
 //!   p_G = p_I + ρ_I (g − a_B)·(r_G − r_I), which for a still wall is (7.5), p_G = p_I + 2d ρ g·n.
 
@@ -24,6 +26,23 @@ pub fn free_slip_velocity<const D: usize>(
 #[inline]
 pub fn point_mirror_velocity<const D: usize>(u_i: &SVector<f64, D>, u_wall: &SVector<f64, D>) -> SVector<f64, D> {
     u_wall * 2.0 - u_i
+}
+
+/// Edge ghost velocity of an axis-aligned box (3D): free slip on the two faces that meet there reverses the
+/// velocity relative to the wall along the axes in `mask` and keeps it along the edge.
+#[inline]
+pub fn axes_mirror_velocity<const D: usize>(
+    u_i: &SVector<f64, D>,
+    u_wall: &SVector<f64, D>,
+    mask: u8,
+) -> SVector<f64, D> {
+    SVector::from_fn(|k, _| {
+        if mask & (1 << k) != 0 {
+            2.0 * u_wall[k] - u_i[k]
+        } else {
+            u_i[k]
+        }
+    })
 }
 
 /// Ghost pressure by the Neumann condition; `body` is the body-force acceleration at the wall.

@@ -1,0 +1,245 @@
+//! An axis-aligned rectangular tank in any dimension D, its walls made of fixed ghost particles (thesis
+//! §7.1.1): the 3D counterpart of a rectangular [`super::polyline_wall::PolylineWall`], and the wall of the
+//! 3D comparison runs.
+//!
+//! The ghosts sit on the fluid's lattice, at lo + (i + ½) ds along each axis, in the layers (k + ½) ds < support
+//! outside every walled face; the top face (the last axis's upper side) is open, and the side walls end at the
+//! tank's top. A ghost outside the tank along one axis mirrors through that face (a plane mirror); outside along
+//! all D axes, through the vertex (the central symmetry of Fig. 7.3); in 3D, outside along two axes, through the
+//! edge the two faces share ([`Mirror::Axes`]: reflected along those two axes, kept along the edge). In 2D the
+//! ghosts are those of the rectangular polyline tank, mirror for mirror (test
+//! `two_dimensional_box_has_the_ghosts_of_the_rectangular_polyline_tank`).
+
+use super::boundary::{Boundary, GhostGeometry, Mirror};
+use nalgebra::SVector;
+
+/// A still, axis-aligned tank [lo, hi] (m), open at the top (the upper side of the last axis).
+#[derive(Clone, Debug)]
+pub struct BoxWall<const D: usize> {
+    name: String,
+    lo: SVector<f64, D>,
+    hi: SVector<f64, D>,
+    ds: f64,
+    support: f64,
+    base: GhostGeometry<D>,
+}
+
+impl<const D: usize> BoxWall<D> {
+    /// The tank [lo, hi] for particle spacing `ds` and kernel support `support` (m). Each side must be a whole
+    /// number of spacings long (the ghosts then continue the fluid's lattice), else the error says which.
+    pub fn new(name: &str, lo: SVector<f64, D>, hi: SVector<f64, D>, ds: f64, support: f64) -> Result<Self, String> {
+        if !(ds > 0.0 && support > 0.0) {
+            return Err(format!(
+                "box wall '{name}': spacing {ds} and support {support} must be positive"
+            ));
+        }
+        let mut cells = [0usize; D];
+        for k in 0..D {
+            let n = (hi[k] - lo[k]) / ds;
+            let whole = n >= 1.0 && (n - n.round()).abs() <= 1e-6;
+            if !whole {
+                return Err(format!(
+                    "box wall '{name}': side {k} is {} m long, expected a positive whole number of spacings {ds} m",
+                    hi[k] - lo[k]
+                ));
+            }
+            cells[k] = n.round() as usize;
+        }
+        let mut layers = 0usize;
+        while (layers as f64 + 0.5) * ds < support {
+            layers += 1;
+        }
+        let base = lattice_ghosts(&lo, ds, &cells, layers);
+        Ok(BoxWall {
+            name: name.to_string(),
+            lo,
+            hi,
+            ds,
+            support,
+            base,
+        })
+    }
+
+    /// Ghost geometry (for tests and plots).
+    pub fn base_ghosts(&self) -> &GhostGeometry<D> {
+        &self.base
+    }
+}
+
+/// The ghosts around the box of `cells` lattice cells from `lo`, `layers` deep on every side but the top.
+fn lattice_ghosts<const D: usize>(
+    lo: &SVector<f64, D>,
+    ds: f64,
+    cells: &[usize; D],
+    layers: usize,
+) -> GhostGeometry<D> {
+    let mut g = GhostGeometry::default();
+    let l = layers as i64;
+    // Lattice index ranges: −layers … cells + layers − 1, except the last axis, which stops at the top.
+    let range = |k: usize| -> (i64, i64) {
+        let n = cells[k] as i64;
+        (-l, if k == D - 1 { n } else { n + l })
+    };
+    let mut idx = [0i64; D];
+    for (k, i) in idx.iter_mut().enumerate() {
+        *i = range(k).0;
+    }
+    'cells: loop {
+        let mut mask = 0u8;
+        let mut pos = SVector::<f64, D>::zeros();
+        let mut interp = SVector::<f64, D>::zeros();
+        for k in 0..D {
+            let n = cells[k] as i64;
+            pos[k] = lo[k] + (idx[k] as f64 + 0.5) * ds;
+            // Reflect the index through the face it is beyond: i → −1 − i below, 2n − 1 − i above.
+            let mirrored = if idx[k] < 0 {
+                mask |= 1 << k;
+                -1 - idx[k]
+            } else if idx[k] >= n {
+                mask |= 1 << k;
+                2 * n - 1 - idx[k]
+            } else {
+                idx[k]
+            };
+            interp[k] = lo[k] + (mirrored as f64 + 0.5) * ds;
+        }
+        if mask != 0 {
+            g.pos.push(pos);
+            g.interp.push(interp);
+            g.wall_vel.push(SVector::zeros());
+            g.wall_acc.push(SVector::zeros());
+            g.volume.push(ds.powi(D as i32));
+            g.mirror.push(match mask.count_ones() as usize {
+                1 => Mirror::Plane,
+                m if m == D => Mirror::Point,
+                _ => Mirror::Axes(mask),
+            });
+        }
+        // Next index, the first axis fastest.
+        for (k, i) in idx.iter_mut().enumerate() {
+            *i += 1;
+            if *i < range(k).1 {
+                continue 'cells;
+            }
+            *i = range(k).0;
+        }
+        break;
+    }
+    g
+}
+
+impl<const D: usize> Boundary<D> for BoxWall<D> {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn moves(&self) -> bool {
+        false
+    }
+    fn ghosts(&self, _t: f64, out: &mut GhostGeometry<D>) {
+        out.append(&self.base);
+    }
+    /// A particle beyond a walled face by less than the support is put back min(½ ds, depth + ¼ ds) inside,
+    /// its velocity into that face removed (as the polyline wall does).
+    fn keep_out(&self, _t: f64, x: &mut SVector<f64, D>, u: &mut SVector<f64, D>) -> bool {
+        let beyond = |k: usize, v: f64| v < self.lo[k] || (k + 1 < D && v > self.hi[k]);
+        let near = (0..D).all(|k| x[k] > self.lo[k] - self.support && (k + 1 == D || x[k] < self.hi[k] + self.support));
+        if !near || x[D - 1] > self.hi[D - 1] || !(0..D).any(|k| beyond(k, x[k])) {
+            return false;
+        }
+        for k in 0..D {
+            if x[k] < self.lo[k] {
+                let depth = self.lo[k] - x[k];
+                x[k] = self.lo[k] + (0.5 * self.ds).min(depth + 0.25 * self.ds);
+                u[k] = u[k].max(0.0);
+            } else if k + 1 < D && x[k] > self.hi[k] {
+                let depth = x[k] - self.hi[k];
+                x[k] = self.hi[k] - (0.5 * self.ds).min(depth + 0.25 * self.ds);
+                u[k] = u[k].min(0.0);
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sph::polyline_wall::{ghost_layers, FluidSide};
+    use nalgebra::{Vector2, Vector3};
+
+    #[test]
+    fn two_dimensional_box_has_the_ghosts_of_the_rectangular_polyline_tank() {
+        let (dx, support) = (0.1, 0.399);
+        let b = BoxWall::new("tank", Vector2::new(0.0, 0.0), Vector2::new(2.0, 1.0), dx, support).unwrap();
+        let pts = vec![
+            Vector2::new(0.0, 1.0),
+            Vector2::new(0.0, 0.0),
+            Vector2::new(2.0, 0.0),
+            Vector2::new(2.0, 1.0),
+        ];
+        let p = ghost_layers(&pts, FluidSide::Left, dx, support);
+        let key = |x: &Vector2<f64>| ((x.x / dx * 2.0).round() as i64, (x.y / dx * 2.0).round() as i64);
+        let mut ours: Vec<_> = (0..b.base.len())
+            .map(|k| (key(&b.base.pos[k]), key(&b.base.interp[k]), b.base.mirror[k]))
+            .collect();
+        let mut theirs: Vec<_> = (0..p.len())
+            .map(|k| (key(&p.pos[k]), key(&p.interp[k]), p.mirror[k]))
+            .collect();
+        ours.sort_by_key(|e| (e.0, e.1));
+        theirs.sort_by_key(|e| (e.0, e.1));
+        assert_eq!(ours.len(), theirs.len());
+        assert_eq!(ours, theirs);
+    }
+
+    #[test]
+    fn three_dimensional_box_mirrors_faces_edges_and_vertices_into_the_tank() {
+        let (dx, support) = (0.1, 0.26); // 3 layers: (k + ½) dx < support for k = 0, 1, 2
+        let lo = Vector3::new(0.0, 0.0, 0.0);
+        let hi = Vector3::new(0.5, 0.4, 0.3);
+        let b = BoxWall::new("tank", lo, hi, dx, support).unwrap();
+        let g = b.base_ghosts();
+        // Outer box (5 + 6) × (4 + 6) × (3 + 3) cells minus the tank's 5 × 4 × 3.
+        assert_eq!(g.len(), 11 * 10 * 6 - 5 * 4 * 3);
+        let (mut planes, mut edges, mut points) = (0, 0, 0);
+        for k in 0..g.len() {
+            let (x, xi) = (g.pos[k], g.interp[k]);
+            assert!(
+                (0..3).all(|a| xi[a] > lo[a] && xi[a] < hi[a]),
+                "mirror point {xi:?} outside the tank"
+            );
+            // Reflected exactly along the axes it is beyond, kept along the others.
+            let moved: Vec<usize> = (0..3).filter(|&a| (x[a] - xi[a]).abs() > 1e-12).collect();
+            match g.mirror[k] {
+                Mirror::Plane => planes += (moved.len() == 1) as usize,
+                Mirror::Axes(m) => {
+                    edges += 1;
+                    assert_eq!(moved.iter().map(|a| 1u8 << a).sum::<u8>(), m);
+                }
+                Mirror::Point => points += (moved.len() == 3) as usize,
+            }
+        }
+        // Faces: two of 4×3 (x), two of 5×3 (y), the floor 5×4, each 3 deep; edges: four vertical
+        // (3 high), two along x (5), two along y (4) on the floor, each 3×3; vertices: the floor's four, 3³.
+        assert_eq!(planes, 3 * (2 * 12 + 2 * 15 + 20));
+        assert_eq!(edges, 9 * (4 * 3 + 2 * 5 + 2 * 4));
+        assert_eq!(points, 4 * 27);
+    }
+
+    #[test]
+    fn box_of_a_fractional_number_of_spacings_is_refused_with_the_side_named() {
+        let e = BoxWall::new("tank", Vector3::zeros(), Vector3::new(1.0, 0.25, 1.0), 0.1, 0.4).unwrap_err();
+        assert!(e.contains("side 1") && e.contains("whole number"), "{e}");
+    }
+
+    #[test]
+    fn particle_pushed_through_the_floor_comes_back_without_its_downward_velocity() {
+        let b = BoxWall::new("tank", Vector3::zeros(), Vector3::new(1.0, 1.0, 1.0), 0.1, 0.4).unwrap();
+        let mut x = Vector3::new(0.5, 0.5, -0.01);
+        let mut u = Vector3::new(0.3, 0.0, -1.0);
+        assert!(b.keep_out(0.0, &mut x, &mut u));
+        assert!((x.z - 0.035).abs() < 1e-12 && u == Vector3::new(0.3, 0.0, 0.0));
+        // Above the open top nothing is inside.
+        let mut x = Vector3::new(1.05, 0.5, 1.2);
+        assert!(!b.keep_out(0.0, &mut x, &mut u));
+    }
+}
