@@ -6,6 +6,7 @@
 use crate::sph::body_force::BodyForce;
 use crate::sph::box_wall::BoxWall;
 use crate::sph::particles::Fluid;
+use crate::sph::polyline_wall::GhostKind;
 use crate::sph::solver::{Simulation, SolverConfig};
 use nalgebra::SVector;
 
@@ -75,9 +76,14 @@ impl<const D: usize> BoxTank<D> {
     /// The simulation: the water, the tank's walls, the configuration `cfg` (from [`BoxTank::config`], changed
     /// as wished).
     pub fn build(&self, cfg: SolverConfig<D>) -> Result<Simulation<D>, String> {
+        self.build_with_ghosts(cfg, GhostKind::Fixed)
+    }
+
+    /// [`BoxTank::build`] with the walls' faces made of ghosts of kind `ghosts`.
+    pub fn build_with_ghosts(&self, cfg: SolverConfig<D>, ghosts: GhostKind) -> Result<Simulation<D>, String> {
         let fluid = self.fluid(&cfg)?;
         let support = cfg.kernel.support_over_h() * cfg.h;
-        let wall = BoxWall::new("tank", SVector::zeros(), self.tank, self.dx, support)?;
+        let wall = BoxWall::new("tank", SVector::zeros(), self.tank, self.dx, support)?.with_ghosts(ghosts);
         Ok(Simulation::new(cfg, fluid, vec![Box::new(wall)]))
     }
 }

@@ -11,6 +11,7 @@
 //! `two_dimensional_box_has_the_ghosts_of_the_rectangular_polyline_tank`).
 
 use super::boundary::{Boundary, GhostGeometry, Mirror};
+use super::polyline_wall::GhostKind;
 use nalgebra::SVector;
 
 /// A still, axis-aligned tank [lo, hi] (m), open at the top (the upper side of the last axis).
@@ -21,6 +22,7 @@ pub struct BoxWall<const D: usize> {
     hi: SVector<f64, D>,
     ds: f64,
     support: f64,
+    kind: GhostKind,
     base: GhostGeometry<D>,
 }
 
@@ -56,8 +58,20 @@ impl<const D: usize> BoxWall<D> {
             hi,
             ds,
             support,
+            kind: GhostKind::Fixed,
             base,
         })
+    }
+
+    /// The same tank with ghosts of kind `kind`: with [`GhostKind::Images`] the faces get the mirror images of
+    /// the fluid at each stage (as the polyline wall's straight sides do) and only the edge and vertex ghosts
+    /// stay fixed.
+    pub fn with_ghosts(mut self, kind: GhostKind) -> Self {
+        self.kind = kind;
+        if kind == GhostKind::Images {
+            self.base = self.base.filtered(|k| self.base.mirror[k] != Mirror::Plane);
+        }
+        self
     }
 
     /// Ghost geometry (for tests and plots).
@@ -137,6 +151,39 @@ impl<const D: usize> Boundary<D> for BoxWall<D> {
     }
     fn ghosts(&self, _t: f64, out: &mut GhostGeometry<D>) {
         out.append(&self.base);
+    }
+    /// With [`GhostKind::Images`]: every particle within the support of a wall face, over that face (inside
+    /// the tank along the other axes), gets its image through the face.
+    fn images(&self, _t: f64, pos: &[SVector<f64, D>], out: &mut GhostGeometry<D>, source: &mut Vec<usize>) {
+        if self.kind != GhostKind::Images {
+            return;
+        }
+        for k in 0..D {
+            for upper in [false, true] {
+                if upper && k == D - 1 {
+                    continue; // the open top
+                }
+                let face = if upper { self.hi[k] } else { self.lo[k] };
+                for (j, x) in pos.iter().enumerate() {
+                    let depth = if upper { face - x[k] } else { x[k] - face };
+                    let over = (0..D)
+                        .filter(|&a| a != k)
+                        .all(|a| x[a] >= self.lo[a] && (a == D - 1 || x[a] <= self.hi[a]));
+                    if depth <= 0.0 || depth >= self.support || !over {
+                        continue;
+                    }
+                    let mut image = *x;
+                    image[k] = 2.0 * face - x[k];
+                    out.pos.push(image);
+                    out.interp.push(*x);
+                    out.wall_vel.push(SVector::zeros());
+                    out.wall_acc.push(SVector::zeros());
+                    out.volume.push(0.0); // the solver gives an image its particle's volume m/ρ
+                    out.mirror.push(Mirror::Plane);
+                    source.push(j);
+                }
+            }
+        }
     }
     /// A particle beyond a walled face by less than the support is put back min(½ ds, depth + ¼ ds) inside,
     /// its velocity into that face removed (as the polyline wall does).
@@ -223,6 +270,29 @@ mod tests {
         assert_eq!(planes, 3 * (2 * 12 + 2 * 15 + 20));
         assert_eq!(edges, 9 * (4 * 3 + 2 * 5 + 2 * 4));
         assert_eq!(points, 4 * 27);
+    }
+
+    #[test]
+    fn image_faces_mirror_each_particle_through_the_faces_within_its_support() {
+        let b = BoxWall::new("tank", Vector3::zeros(), Vector3::new(1.0, 1.0, 1.0), 0.1, 0.4)
+            .unwrap()
+            .with_ghosts(GhostKind::Images);
+        // Only edge and vertex ghosts stay fixed.
+        assert!(b.base_ghosts().mirror.iter().all(|m| *m != Mirror::Plane));
+        // Near the floor and the x = 0 face: two images; in the middle none; near the open top none.
+        let pos = [
+            Vector3::new(0.15, 0.5, 0.05),
+            Vector3::new(0.5, 0.5, 0.5),
+            Vector3::new(0.5, 0.5, 0.95),
+        ];
+        let (mut out, mut source) = (GhostGeometry::default(), vec![]);
+        b.images(0.0, &pos, &mut out, &mut source);
+        assert_eq!(source, vec![0, 0]);
+        let mut images: Vec<_> = out.pos.iter().map(|p| (p.x, p.z)).collect();
+        images.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert!((images[0].0 + 0.15).abs() < 1e-12 && (images[0].1 - 0.05).abs() < 1e-12);
+        assert!((images[1].0 - 0.15).abs() < 1e-12 && (images[1].1 + 0.05).abs() < 1e-12);
+        assert!(out.interp.iter().all(|x| *x == pos[0]) && out.mirror.iter().all(|m| *m == Mirror::Plane));
     }
 
     #[test]
