@@ -6,6 +6,7 @@ pub mod charts;
 pub mod collect;
 pub mod figures;
 pub mod runner;
+pub mod slab;
 pub mod study_file;
 pub mod twodt_chart;
 pub mod twodt_convergence;

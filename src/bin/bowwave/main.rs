@@ -8,6 +8,7 @@ mod chart;
 mod converge;
 mod hull;
 mod options;
+mod slab;
 mod study;
 mod twodt;
 
@@ -53,6 +54,10 @@ enum Command {
     Wedge(twodt::WedgeArgs),
     /// Measure throughput (particle-steps per second) on the dam break.
     Bench(bench::BenchArgs),
+    /// The 3D comparison mode's first case: the dam break in 2D and as a 3D slab between free-slip side
+    /// walls at the same spacing; prints how far the 3D front and wall pressures are from the 2D ones and
+    /// what the third dimension costs; writes slab.csv.
+    Slab(slab::SlabArgs),
     /// Hull geometry: check a hull file, import one from STL, generate the Athena or Alliance approximation,
     /// draw a hull, or write the Wigley hull.
     Hull {
@@ -91,6 +96,7 @@ fn run() -> anyhow::Result<()> {
         Command::Study(a) => a.run(),
         Command::Wedge(a) => a.run(),
         Command::Bench(a) => a.run(),
+        Command::Slab(a) => a.run(),
         Command::Hull { action } => action.run(),
         Command::BenchOne(a) => a.run(),
         Command::Cases(a) => a.run(),
@@ -135,6 +141,9 @@ mod tests {
                 "150",
             ],
             &["bowwave", "--threads", "1", "validate", "dam-break"],
+            &[
+                "bowwave", "slab", "--res", "20", "--width", "6", "--end", "3", "--ghosts", "images",
+            ],
         ] {
             if let Err(e) = <Cli as clap::Parser>::try_parse_from(args) {
                 panic!("{args:?}: {e}");

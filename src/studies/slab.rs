@@ -1,0 +1,257 @@
+//! The first case of the 3D comparison mode: the dam break of issue #2 run twice at the same spacing, in 2D
+//! and as a 3D slab between free-slip side walls, so that the 3D engine is checked against the 2D one on a
+//! flow that is 2D, and the cost of the third dimension is measured. Both runs use
+//! [`crate::cases::box_tank::BoxTank`] (the 2D box tank has the polyline tank's ghosts), the dam-break
+//! parameters of `cases/dam-break.toml` (H = 0.6 m, column 2H × H, c0 = 20 √(gH), the thesis's defaults), and
+//! the tank's length rounded to a whole number of spacings (5.366 H within dx/2).
+
+use crate::cases::box_tank::BoxTank;
+use crate::sph::diagnostics::front;
+use crate::sph::polyline_wall::GhostKind;
+use crate::sph::solver::Simulation;
+use nalgebra::{SVector, Vector2, Vector3};
+use std::time::Instant;
+
+/// Water column height H (m), as in `cases/dam-break.toml`.
+pub const H: f64 = 0.6;
+const G: f64 = 9.81;
+const RHO0: f64 = 1000.0;
+/// Wall sensors P1 and P2: centre heights (m) and diameter (m), averaged over 5 points along the wall, as the
+/// 2D case's probes (Buchner's sensors, thesis §8.4).
+const SENSORS: [f64; 2] = [0.16, 0.584];
+const SENSOR_SIZE: f64 = 0.09;
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct SlabOptions {
+    /// H/dx.
+    pub res: f64,
+    /// Slab width in particle spacings (the 3D run's particle count is this times the 2D run's).
+    pub width_cells: usize,
+    /// End time t√(g/H).
+    pub end: f64,
+    /// Ghosts of the tank's faces (both runs).
+    pub ghosts: GhostKind,
+    /// Sampling interval in t√(g/H).
+    pub every: f64,
+}
+
+/// One run's history at the sampling times.
+#[derive(Clone, Debug, Default)]
+pub struct RunHistory {
+    /// t√(g/H) of each sample.
+    pub t_star: Vec<f64>,
+    /// Front x/H (the farthest particle plus dx/2).
+    pub front: Vec<f64>,
+    /// P1 and P2 over ρ0 g H.
+    pub p1: Vec<f64>,
+    pub p2: Vec<f64>,
+    pub n_fluid: usize,
+    pub n_ghosts_end: usize,
+    pub steps: u64,
+    pub wall_seconds: f64,
+}
+
+impl RunHistory {
+    /// Fluid particle-steps per wall second (a step counts once, whatever its RK stages).
+    pub fn throughput(&self) -> f64 {
+        self.n_fluid as f64 * self.steps as f64 / self.wall_seconds
+    }
+}
+
+/// The two runs.
+#[derive(Clone, Debug)]
+pub struct SlabComparison {
+    pub options: SlabOptions,
+    pub two: RunHistory,
+    pub three: RunHistory,
+}
+
+impl SlabComparison {
+    /// Sample indices k whose time (2D run's) lies in [from, to]; both runs sample at the first step past each
+    /// multiple of the interval, so sample k is the same nominal time in both.
+    fn samples(&self, from: f64, to: f64) -> impl Iterator<Item = usize> + '_ {
+        let n = self.two.t_star.len().min(self.three.t_star.len());
+        (0..n).filter(move |&k| (from..=to).contains(&self.two.t_star[k]))
+    }
+
+    /// Largest |x_3D − x_2D|/H of the front over t√(g/H) ≤ `until` (before the impact, at about 2.4).
+    pub fn max_front_gap(&self, until: f64) -> f64 {
+        self.samples(0.0, until)
+            .map(|k| (self.three.front[k] - self.two.front[k]).abs())
+            .fold(0.0, f64::max)
+    }
+
+    /// Mean |p_3D − p_2D|/(ρ0 g H) at sensor P1 (`sensor` = 0) or P2 (1) over t√(g/H) in [from, to].
+    pub fn mean_pressure_gap(&self, sensor: usize, from: f64, to: f64) -> f64 {
+        let (a, b) = match sensor {
+            0 => (&self.two.p1, &self.three.p1),
+            _ => (&self.two.p2, &self.three.p2),
+        };
+        let gaps: Vec<f64> = self.samples(from, to).map(|k| (b[k] - a[k]).abs()).collect();
+        gaps.iter().sum::<f64>() / gaps.len() as f64
+    }
+
+    /// The histories side by side: t*, then front, P1 and P2 of the 2D and of the 3D run.
+    pub fn table(&self) -> crate::io::csv_table::Table {
+        let cols = ["t_star", "front_2d", "front_3d", "p1_2d", "p1_3d", "p2_2d", "p2_3d"];
+        let mut t = crate::io::csv_table::Table::new(cols.iter().map(|c| c.to_string()).collect());
+        let (a, b) = (&self.two, &self.three);
+        for k in 0..a.t_star.len().min(b.t_star.len()) {
+            t.push(vec![
+                a.t_star[k],
+                a.front[k],
+                b.front[k],
+                a.p1[k],
+                b.p1[k],
+                a.p2[k],
+                b.p2[k],
+            ]);
+        }
+        t
+    }
+}
+
+/// Runs `sim` to `opts.end`, sampling front and sensors; `at_wall(height)` is the sensor point on the right
+/// wall at that height (m).
+fn run_one<const D: usize>(
+    mut sim: Simulation<D>,
+    opts: &SlabOptions,
+    at_wall: impl Fn(f64) -> SVector<f64, D>,
+    label: &str,
+    progress: bool,
+) -> anyhow::Result<RunHistory> {
+    let ts = (H / G).sqrt();
+    let dx = H / opts.res;
+    let mut h = RunHistory {
+        n_fluid: sim.n_fluid(),
+        ..Default::default()
+    };
+    let bar = progress.then(|| {
+        let b = indicatif::ProgressBar::new((opts.end * 100.0) as u64);
+        b.set_style(
+            indicatif::ProgressStyle::with_template(&format!(
+                "{label} {{bar:40}} t* {{msg}} [{{elapsed_precise}} / eta {{eta_precise}}]"
+            ))
+            .expect("valid template"),
+        );
+        b
+    });
+    let clock = Instant::now();
+    let mut next = 0.0;
+    loop {
+        let t_star = sim.time / ts;
+        if t_star >= next {
+            sim.refresh();
+            let sensor = |centre: f64| -> f64 {
+                (0..5)
+                    .map(|k| sim.sensor_pressure_at(&at_wall(centre + SENSOR_SIZE * (k as f64 / 4.0 - 0.5))))
+                    .sum::<f64>()
+                    / 5.0
+                    / (RHO0 * G * H)
+            };
+            h.t_star.push(t_star);
+            h.front.push(front(&sim.fluid, 0, dx) / H);
+            h.p1.push(sensor(SENSORS[0]));
+            h.p2.push(sensor(SENSORS[1]));
+            next += opts.every;
+            if let Some(b) = &bar {
+                b.set_position((t_star * 100.0) as u64);
+                b.set_message(format!("{t_star:.2}"));
+            }
+        }
+        if t_star >= opts.end {
+            break;
+        }
+        if let Err(e) = sim.step() {
+            anyhow::bail!("the {label} run blew up at t* = {t_star:.3}: {e}");
+        }
+    }
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    h.steps = sim.steps;
+    h.wall_seconds = clock.elapsed().as_secs_f64();
+    h.n_ghosts_end = sim.ghosts.geom.pos.len();
+    Ok(h)
+}
+
+/// Runs the dam break in 2D, then as the 3D slab.
+pub fn compare(opts: &SlabOptions, progress: bool) -> anyhow::Result<SlabComparison> {
+    if !(opts.res >= 4.0 && opts.width_cells >= 1 && opts.end > 0.0 && opts.every > 0.0) {
+        anyhow::bail!(
+            "slab comparison: expected H/dx ≥ 4, a width of at least 1 spacing, and positive end time and sampling \
+             interval; got {opts:?}"
+        );
+    }
+    let dx = H / opts.res;
+    let long = (5.366 * opts.res).round() * dx;
+    let c0 = 20.0 * (G * H).sqrt();
+    let width = opts.width_cells as f64 * dx;
+    let tank2 = BoxTank {
+        tank: Vector2::new(long, 5.0 * H),
+        water: Vector2::new(2.0 * H, H),
+        dx,
+        rho0: RHO0,
+        c0,
+        g: G,
+    };
+    let tank3 = BoxTank {
+        tank: Vector3::new(long, width, 3.0 * H),
+        water: Vector3::new(2.0 * H, width, H),
+        dx,
+        rho0: RHO0,
+        c0,
+        g: G,
+    };
+    let sim2 = tank2
+        .build_with_ghosts(tank2.config(), opts.ghosts)
+        .map_err(anyhow::Error::msg)?;
+    let sim3 = tank3
+        .build_with_ghosts(tank3.config(), opts.ghosts)
+        .map_err(anyhow::Error::msg)?;
+    let two = run_one(sim2, opts, |y| Vector2::new(long, y), "2D", progress)?;
+    let three = run_one(sim3, opts, |z| Vector3::new(long, 0.5 * width, z), "3D", progress)?;
+    Ok(SlabComparison {
+        options: opts.clone(),
+        two,
+        three,
+    })
+}
+
+/// Time before which the fronts are compared (t√(g/H)): the front meets the wall at about 2.4.
+pub const BEFORE_IMPACT: f64 = 2.3;
+
+/// A terminal summary: the runs' sizes and costs, the front gap before the impact and the wall-pressure gaps
+/// after it.
+pub fn summary(c: &SlabComparison) -> String {
+    let o = &c.options;
+    let mut s = format!(
+        "dam break, H/dx {}, {:?} ghosts, to t* = {}: 2D against a 3D slab {} spacings wide\n",
+        o.res, o.ghosts, o.end, o.width_cells
+    );
+    for (name, r) in [("2D", &c.two), ("3D", &c.three)] {
+        s += &format!(
+            "  {name}: {} fluid particles, {} ghosts at the end, {} steps, {:.1} s, {:.3e} particle-steps/s\n",
+            r.n_fluid,
+            r.n_ghosts_end,
+            r.steps,
+            r.wall_seconds,
+            r.throughput()
+        );
+    }
+    s += &format!(
+        "  front, max |x_3D − x_2D|/H for t* ≤ {BEFORE_IMPACT}: {:.4}\n",
+        c.max_front_gap(BEFORE_IMPACT)
+    );
+    if o.end > BEFORE_IMPACT {
+        for (k, name) in ["P1", "P2"].iter().enumerate() {
+            s += &format!(
+                "  {name}, mean |p_3D − p_2D|/(ρgH) over t* {BEFORE_IMPACT}–{}: {:.4}\n",
+                o.end,
+                c.mean_pressure_gap(k, BEFORE_IMPACT, o.end)
+            );
+        }
+    }
+    s
+}
