@@ -153,7 +153,7 @@ impl<const D: usize> Boundary<D> for BoxWall<D> {
         out.append(&self.base);
     }
     /// With [`GhostKind::Images`]: every particle within the support of a wall face, over that face (inside
-    /// the tank along the other axes), gets its image through the face.
+    /// the tank along the other axes, so not above the side walls' top), gets its image through the face.
     fn images(&self, _t: f64, pos: &[SVector<f64, D>], out: &mut GhostGeometry<D>, source: &mut Vec<usize>) {
         if self.kind != GhostKind::Images {
             return;
@@ -166,9 +166,10 @@ impl<const D: usize> Boundary<D> for BoxWall<D> {
                 let face = if upper { self.hi[k] } else { self.lo[k] };
                 for (j, x) in pos.iter().enumerate() {
                     let depth = if upper { face - x[k] } else { x[k] - face };
+                    // Over the face: inside the tank along the other axes (the side walls end at the top).
                     let over = (0..D)
                         .filter(|&a| a != k)
-                        .all(|a| x[a] >= self.lo[a] && (a == D - 1 || x[a] <= self.hi[a]));
+                        .all(|a| x[a] >= self.lo[a] && x[a] <= self.hi[a]);
                     if depth <= 0.0 || depth >= self.support || !over {
                         continue;
                     }
