@@ -296,6 +296,20 @@ mod tests {
         assert!(out.interp.iter().all(|x| *x == pos[0]) && out.mirror.iter().all(|m| *m == Mirror::Plane));
     }
 
+    /// Regression: the first version imaged a particle through a side face at any height, above the top
+    /// where the wall (its fixed ghosts, and the polyline's images) ends.
+    #[test]
+    fn particle_above_a_side_wall_gets_no_image() {
+        let b = BoxWall::new("tank", Vector3::zeros(), Vector3::new(1.0, 1.0, 1.0), 0.1, 0.4)
+            .unwrap()
+            .with_ghosts(GhostKind::Images);
+        let (mut out, mut source) = (GhostGeometry::default(), vec![]);
+        b.images(0.0, &[Vector3::new(0.05, 0.5, 1.1)], &mut out, &mut source);
+        assert!(source.is_empty() && out.is_empty());
+        b.images(0.0, &[Vector3::new(0.05, 0.5, 0.9)], &mut out, &mut source);
+        assert_eq!(source, vec![0]);
+    }
+
     #[test]
     fn box_of_a_fractional_number_of_spacings_is_refused_with_the_side_named() {
         let e = BoxWall::new("tank", Vector3::zeros(), Vector3::new(1.0, 0.25, 1.0), 0.1, 0.4).unwrap_err();
