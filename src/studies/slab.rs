@@ -255,3 +255,37 @@ pub fn summary(c: &SlabComparison) -> String {
     }
     s
 }
+
+/// Writes `slab_front.png` (front x/H against t*, 2D and 3D) and `slab_pressure.png` (P1 and P2 against t*) in
+/// `dir`.
+pub fn write_plots(c: &SlabComparison, dir: &std::path::Path) -> anyhow::Result<()> {
+    use crate::io::plot::{line_plot, Series, Style};
+    let series = |name: &str, r: &RunHistory, pick: fn(&RunHistory) -> &Vec<f64>| Series {
+        name: name.to_string(),
+        points: r.t_star.iter().copied().zip(pick(r).iter().copied()).collect(),
+        style: Style::Line,
+    };
+    let title = format!("dam break, H/dx {}, {:?} ghosts", c.options.res, c.options.ghosts);
+    line_plot(
+        &dir.join("slab_front.png"),
+        &format!("{title}: front"),
+        "t sqrt(g/H)",
+        "front x/H",
+        &[
+            series("2D", &c.two, |r| &r.front),
+            series("3D slab", &c.three, |r| &r.front),
+        ],
+    )?;
+    line_plot(
+        &dir.join("slab_pressure.png"),
+        &format!("{title}: wall pressure"),
+        "t sqrt(g/H)",
+        "p/(rho g H)",
+        &[
+            series("P1 2D", &c.two, |r| &r.p1),
+            series("P1 3D slab", &c.three, |r| &r.p1),
+            series("P2 2D", &c.two, |r| &r.p2),
+            series("P2 3D slab", &c.three, |r| &r.p2),
+        ],
+    )
+}

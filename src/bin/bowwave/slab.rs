@@ -23,7 +23,7 @@ pub struct SlabArgs {
     /// Sampling interval in t sqrt(g/H).
     #[arg(long, default_value_t = 0.01)]
     pub every: f64,
-    /// Output folder for slab.csv (default out/slab-resN).
+    /// Output folder for slab.csv, slab_front.png and slab_pressure.png (default out/slab-resN).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// No progress bars.
@@ -49,8 +49,12 @@ impl SlabArgs {
         c.table()
             .write(&csv)
             .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", csv.display()))?;
+        bowwave::studies::slab::write_plots(&c, &out)?;
         println!("{}", bowwave::studies::slab::summary(&c));
-        println!("written: {}", csv.display());
+        println!(
+            "written: {} (slab.csv, slab_front.png, slab_pressure.png)",
+            out.display()
+        );
         Ok(())
     }
 }
