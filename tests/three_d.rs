@@ -190,3 +190,36 @@ fn three_dimensional_slab_front_follows_the_two_dimensional_one_within_its_resol
         }
     }
 }
+
+#[test]
+fn slab_comparison_refuses_bad_options_with_what_it_expected() {
+    use bowwave::studies::slab::{compare, SlabOptions};
+    let good = SlabOptions {
+        res: 10.0,
+        width_cells: 4,
+        end: 1.0,
+        ghosts: GhostKind::Fixed,
+        every: 0.1,
+    };
+    for bad in [
+        SlabOptions {
+            res: 2.0,
+            ..good.clone()
+        },
+        SlabOptions {
+            width_cells: 0,
+            ..good.clone()
+        },
+        SlabOptions {
+            end: f64::NAN,
+            ..good.clone()
+        },
+        SlabOptions {
+            every: 0.0,
+            ..good.clone()
+        },
+    ] {
+        let e = compare(&bad, false).unwrap_err().to_string();
+        assert!(e.contains("expected H/dx ≥ 4"), "{e}");
+    }
+}
