@@ -170,6 +170,7 @@ fn three_dimensional_slab_front_follows_the_two_dimensional_one_within_its_resol
             end: 2.1,
             ghosts,
             every: 0.1,
+            cfl: None,
         };
         let coarse = compare(&opts(10.0, 4), false).unwrap();
         let fine = compare(&opts(20.0, 1), false).unwrap();
@@ -200,6 +201,7 @@ fn slab_comparison_refuses_bad_options_with_what_it_expected() {
         end: 1.0,
         ghosts: GhostKind::Fixed,
         every: 0.1,
+        cfl: None,
     };
     for bad in [
         SlabOptions {

@@ -34,6 +34,8 @@ pub struct SlabOptions {
     pub ghosts: GhostKind,
     /// Sampling interval in t√(g/H).
     pub every: f64,
+    /// CFL number of both runs (`None`: the integrator's default, RK4 2.0, docs/method.md).
+    pub cfl: Option<f64>,
 }
 
 /// One run's history at the sampling times.
@@ -50,6 +52,9 @@ pub struct RunHistory {
     pub n_ghosts_end: usize,
     pub steps: u64,
     pub wall_seconds: f64,
+    /// Why the run stopped before the end time, if it did (a blow-up's diagnosis); the history holds the
+    /// samples taken until then.
+    pub stopped: Option<String>,
 }
 
 impl RunHistory {
@@ -68,6 +73,11 @@ pub struct SlabComparison {
 }
 
 impl SlabComparison {
+    /// The first blow-up's diagnosis, if a run stopped early.
+    pub fn stopped(&self) -> Option<&str> {
+        self.two.stopped.as_deref().or(self.three.stopped.as_deref())
+    }
+
     /// Sample indices k whose time (2D run's) lies in [from, to]; both runs sample at the first step past each
     /// multiple of the interval, so sample k is the same nominal time in both.
     fn samples(&self, from: f64, to: f64) -> impl Iterator<Item = usize> + '_ {
@@ -164,7 +174,8 @@ fn run_one<const D: usize>(
             break;
         }
         if let Err(e) = sim.step() {
-            anyhow::bail!("the {label} run blew up at t* = {t_star:.3}: {e}");
+            h.stopped = Some(format!("the {label} run blew up at t* = {t_star:.3}: {e}"));
+            break;
         }
     }
     if let Some(b) = &bar {
@@ -176,12 +187,14 @@ fn run_one<const D: usize>(
     Ok(h)
 }
 
-/// Runs the dam break in 2D, then as the 3D slab.
+/// Runs the dam break in 2D, then as the 3D slab (not if the 2D run blew up). A run that blows up stops with
+/// its diagnosis in [`RunHistory::stopped`] and keeps the samples it took ([`SlabComparison::stopped`]).
 pub fn compare(opts: &SlabOptions, progress: bool) -> anyhow::Result<SlabComparison> {
-    if !(opts.res >= 4.0 && opts.width_cells >= 1 && opts.end > 0.0 && opts.every > 0.0) {
+    let cfl_ok = opts.cfl.is_none_or(|c| c > 0.0);
+    if !(opts.res >= 4.0 && opts.width_cells >= 1 && opts.end > 0.0 && opts.every > 0.0 && cfl_ok) {
         anyhow::bail!(
-            "slab comparison: expected H/dx ≥ 4, a width of at least 1 spacing, and positive end time and sampling \
-             interval; got {opts:?}"
+            "slab comparison: expected H/dx ≥ 4, a width of at least 1 spacing, positive end time, sampling \
+             interval and CFL; got {opts:?}"
         );
     }
     let dx = H / opts.res;
@@ -211,7 +224,11 @@ pub fn compare(opts: &SlabOptions, progress: bool) -> anyhow::Result<SlabCompari
         .build_with_ghosts(tank3.config(), opts.ghosts)
         .map_err(anyhow::Error::msg)?;
     let two = run_one(sim2, opts, |y| Vector2::new(long, y), "2D", progress)?;
-    let three = run_one(sim3, opts, |z| Vector3::new(long, 0.5 * width, z), "3D", progress)?;
+    let three = if two.stopped.is_none() {
+        run_one(sim3, opts, |z| Vector3::new(long, 0.5 * width, z), "3D", progress)?
+    } else {
+        RunHistory::default()
+    };
     Ok(SlabComparison {
         options: opts.clone(),
         two,
@@ -244,6 +261,9 @@ pub fn summary(c: &SlabComparison) -> String {
         "  front, max |x_3D − x_2D|/H for t* ≤ {BEFORE_IMPACT}: {:.4}\n",
         c.max_front_gap(BEFORE_IMPACT)
     );
+    if let Some(why) = c.stopped() {
+        s += &format!("  stopped early: {why}\n");
+    }
     if o.end > BEFORE_IMPACT {
         for (k, name) in ["P1", "P2"].iter().enumerate() {
             s += &format!(

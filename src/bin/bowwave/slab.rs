@@ -23,6 +23,9 @@ pub struct SlabArgs {
     /// Sampling interval in t sqrt(g/H).
     #[arg(long, default_value_t = 0.01)]
     pub every: f64,
+    /// CFL number of both runs (default: the integrator's, RK4 2.0).
+    #[arg(long)]
+    pub cfl: Option<f64>,
     /// Output folder for slab.csv, slab_front.png and slab_pressure.png (default out/slab-resN).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -39,6 +42,7 @@ impl SlabArgs {
             end: self.end,
             ghosts: self.ghosts.into(),
             every: self.every,
+            cfl: self.cfl,
         };
         let c = compare(&opts, !self.quiet)?;
         let out = self
