@@ -393,10 +393,9 @@ impl<const D: usize> Simulation<D> {
                 |nb: &mut Vec<(usize, SVector<f64, D>, f64)>, g| {
                     let xi = geom.interp[g];
                     nb.clear();
-                    cells.for_each_within(all_pos, &xi, kernel.support, |j, rij, r| {
-                        if j < nf {
-                            nb.push((j, rij, kernel.w(r) * mass[j] / rho[j]));
-                        }
+                    // The fluid only (indices below nf): the scan of each cell stops at its first ghost.
+                    cells.for_each_below_within(all_pos, &xi, kernel.support, nf, |j, rij, r| {
+                        nb.push((j, rij, kernel.w(r) * mass[j] / rho[j]));
                     });
                     let wall_vel = geom.wall_vel[g];
                     if nb.is_empty() {
