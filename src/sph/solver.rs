@@ -721,10 +721,7 @@ impl<const D: usize> Simulation<D> {
                 let mut f = SVector::zeros();
                 let xg = gs.geom.pos[g];
                 self.cells
-                    .for_each_within(&self.all_pos, &xg, kernel.support, |j, rgj, r| {
-                        if j >= nf {
-                            return;
-                        }
+                    .for_each_below_within(&self.all_pos, &xg, kernel.support, nf, |j, rgj, r| {
                         let rij = -rgj; // r_i − r_g with i the fluid particle
                         let gw = kernel.grad(&rij, r);
                         let u_ji = gs.vel[g] - fl.vel[j];
