@@ -108,8 +108,8 @@ fn tank_at_rest(ghosts: GhostKind) -> TankAtRest {
 /// its walls carry its weight within 1 % (a fluid at rest is held by its walls alone). The pressure is printed,
 /// not asserted: with fixed ghosts in 3D it creeps up while the water stays at rest (bottom sensor 1.014 ρgH at
 /// t* = 5, 1.040 at 20, the interior gradient 3 % above ρ0 g; 2D at the same spacing holds 1.01–1.016), an open
-/// defect written up in docs/method.md ("Three dimensions"); the next test shows that image ghosts on the
-/// faces remove it.
+/// defect of this coarse spacing written up in docs/method.md ("Three dimensions": at H/dx 20 it reads
+/// 1.001–1.012 of M g / A over t* 5–20, no trend); the next test shows that image ghosts on the faces remove it.
 #[test]
 fn three_dimensional_tank_is_held_at_rest_by_its_walls() {
     tank_at_rest(GhostKind::Fixed).assert_held_at_rest();
