@@ -225,3 +225,37 @@ fn slab_comparison_refuses_bad_options_with_what_it_expected() {
         assert!(e.contains("expected H/dx ≥ 4"), "{e}");
     }
 }
+
+/// A comparison whose 3D run stopped early keeps every 2D sample in its table, the 3D columns NaN past the
+/// stop (the blow-up path itself cannot be reached cheaply: no small case blows up).
+#[test]
+fn slab_table_keeps_the_two_dimensional_samples_past_a_stopped_three_dimensional_run() {
+    use bowwave::studies::slab::{RunHistory, SlabComparison, SlabOptions};
+    let run = |n: usize| RunHistory {
+        t_star: (0..n).map(|k| k as f64 * 0.1).collect(),
+        front: vec![2.0; n],
+        p1: vec![0.0; n],
+        p2: vec![0.0; n],
+        ..Default::default()
+    };
+    let c = SlabComparison {
+        options: SlabOptions {
+            res: 10.0,
+            width_cells: 4,
+            end: 0.5,
+            ghosts: GhostKind::Fixed,
+            every: 0.1,
+            cfl: None,
+        },
+        two: run(6),
+        three: RunHistory {
+            stopped: Some("the 3D run blew up".into()),
+            ..run(3)
+        },
+    };
+    let t = c.table();
+    let front_3d = t.column("front_3d").unwrap();
+    assert_eq!(front_3d.len(), 6);
+    assert!(front_3d[..3].iter().all(|x| *x == 2.0) && front_3d[3..].iter().all(|x| x.is_nan()));
+    assert_eq!(c.stopped(), Some("the 3D run blew up"));
+}

@@ -102,20 +102,23 @@ impl SlabComparison {
         gaps.iter().sum::<f64>() / gaps.len() as f64
     }
 
-    /// The histories side by side: t*, then front, P1 and P2 of the 2D and of the 3D run.
+    /// The histories side by side: t*, then front, P1 and P2 of the 2D and of the 3D run (one row per 2D
+    /// sample).
     pub fn table(&self) -> crate::io::csv_table::Table {
         let cols = ["t_star", "front_2d", "front_3d", "p1_2d", "p1_3d", "p2_2d", "p2_3d"];
         let mut t = crate::io::csv_table::Table::new(cols.iter().map(|c| c.to_string()).collect());
         let (a, b) = (&self.two, &self.three);
-        for k in 0..a.t_star.len().min(b.t_star.len()) {
+        // A 3D run that stopped early (or did not run) leaves NaN in its columns past its last sample.
+        let at = |v: &Vec<f64>, k: usize| v.get(k).copied().unwrap_or(f64::NAN);
+        for k in 0..a.t_star.len() {
             t.push(vec![
                 a.t_star[k],
                 a.front[k],
-                b.front[k],
+                at(&b.front, k),
                 a.p1[k],
-                b.p1[k],
+                at(&b.p1, k),
                 a.p2[k],
-                b.p2[k],
+                at(&b.p2, k),
             ]);
         }
         t
