@@ -4,7 +4,7 @@
 //! that the same solver runs in 3D from code, before 3D case files do.
 
 use crate::sph::body_force::BodyForce;
-use crate::sph::box_wall::BoxWall;
+use crate::sph::box_wall::{whole_spacings, BoxWall};
 use crate::sph::particles::Fluid;
 use crate::sph::polyline_wall::GhostKind;
 use crate::sph::solver::{Simulation, SolverConfig};
@@ -44,15 +44,15 @@ impl<const D: usize> BoxTank<D> {
     pub fn fluid(&self, cfg: &SolverConfig<D>) -> Result<Fluid<D>, String> {
         let mut n = [0usize; D];
         for (k, nk) in n.iter_mut().enumerate() {
-            let c = self.water[k] / self.dx;
-            let whole = c >= 1.0 && (c - c.round()).abs() <= 1e-6;
-            if !whole || self.water[k] > self.tank[k] {
-                return Err(format!(
-                    "water block side {k} is {} m: expected a positive whole number of spacings {} m, inside the tank",
-                    self.water[k], self.dx
-                ));
-            }
-            *nk = c.round() as usize;
+            *nk = whole_spacings(self.water[k], self.dx)
+                .filter(|_| self.water[k] <= self.tank[k])
+                .ok_or_else(|| {
+                    format!(
+                        "water block side {k} is {} m: expected a positive whole number of spacings {} m, inside the \
+                         tank",
+                        self.water[k], self.dx
+                    )
+                })?;
         }
         let mut f = Fluid::default();
         let mut idx = [0usize; D];

@@ -37,15 +37,12 @@ impl<const D: usize> BoxWall<D> {
         }
         let mut cells = [0usize; D];
         for k in 0..D {
-            let n = (hi[k] - lo[k]) / ds;
-            let whole = n >= 1.0 && (n - n.round()).abs() <= 1e-6;
-            if !whole {
-                return Err(format!(
+            cells[k] = whole_spacings(hi[k] - lo[k], ds).ok_or_else(|| {
+                format!(
                     "box wall '{name}': side {k} is {} m long, expected a positive whole number of spacings {ds} m",
                     hi[k] - lo[k]
-                ));
-            }
-            cells[k] = n.round() as usize;
+                )
+            })?;
         }
         let mut layers = 0usize;
         while (layers as f64 + 0.5) * ds < support {
@@ -78,6 +75,13 @@ impl<const D: usize> BoxWall<D> {
     pub fn base_ghosts(&self) -> &GhostGeometry<D> {
         &self.base
     }
+}
+
+/// The number of spacings `ds` in `length` if it is a positive whole number of them (within 1e-6 of one), else
+/// `None`. The box's sides, and the blocks of water laid on the same lattice, must be.
+pub fn whole_spacings(length: f64, ds: f64) -> Option<usize> {
+    let n = length / ds;
+    (n >= 1.0 && (n - n.round()).abs() <= 1e-6).then(|| n.round() as usize)
 }
 
 /// The ghosts around the box of `cells` lattice cells from `lo`, `layers` deep on every side but the top.
