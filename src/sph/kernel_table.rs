@@ -14,7 +14,9 @@ use super::kernel::{Kernel, KernelKind};
 pub struct GradientTable {
     r2_max: f64,
     inv_ds: f64,
-    values: Vec<f64>,
+    /// Per interval k: F at its start and the difference to the next sample, (F_k, F_{k+1} − F_k). A
+    /// fixed-size array, so the index clamped below `INTERVALS` needs no bounds check in the pair loops.
+    intervals: Box<[[f64; 2]; GradientTable::INTERVALS]>,
 }
 
 impl GradientTable {
@@ -30,13 +32,14 @@ impl GradientTable {
         let r2_max = kernel.support * kernel.support;
         let ds = r2_max / Self::INTERVALS as f64;
         // The last sample is taken just inside the support (F is cut to zero at R² itself).
-        let values = (0..=Self::INTERVALS)
+        let values: Vec<f64> = (0..=Self::INTERVALS)
             .map(|k| kernel.grad_factor((k as f64 * ds).min(r2_max * (1.0 - 1e-15))))
             .collect();
+        let intervals: Box<[[f64; 2]]> = values.windows(2).map(|w| [w[0], w[1] - w[0]]).collect();
         Some(GradientTable {
             r2_max,
             inv_ds: 1.0 / ds,
-            values,
+            intervals: intervals.try_into().expect("INTERVALS intervals"),
         })
     }
 
@@ -47,10 +50,11 @@ impl GradientTable {
             return 0.0;
         }
         let x = r2 * self.inv_ds;
-        let k = (x as usize).min(Self::INTERVALS - 1);
+        // 0 ≤ x < INTERVALS here: a cast to i32 is exact and takes half the instructions of the saturating cast to usize.
+        let k = (x as i32).min(Self::INTERVALS as i32 - 1) as usize;
         let f = x - k as f64;
-        let (a, b) = (self.values[k], self.values[k + 1]);
-        a + (b - a) * f
+        let [a, slope] = self.intervals[k];
+        a + slope * f
     }
 }
 
