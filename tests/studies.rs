@@ -141,6 +141,50 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
     assert!(runner::collect_finished(&changed, &out).is_empty());
 }
 
+/// The published trends of the jet's own metrics (I_OG/S², α_G) are judged only on jets of at least
+/// `RESOLVED_JET_PARTICLES` particles: at dx/L 7e-4 (15–32 jet particles) a round-off change of the initial
+/// packing flipped the α_G verdict (docs/twodt.md, session 16). Metrics put in by hand on two short runs.
+#[test]
+fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
+    use bowwave::studies::collect::{report, trends, RESOLVED_JET_PARTICLES};
+    let (study, dir) = fresh_study(
+        "jet-guard",
+        "froude = [0.55, 0.64]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = 0.01\n",
+    );
+    let out = dir.join("out");
+    runner::run_cases(&study, &serial_options(&out)).unwrap();
+    let mut records = runner::collect_finished(&study, &out);
+    assert_eq!(records.len(), 2);
+    let with_jets = |records: &mut Vec<bowwave::studies::runner::CaseRecord>, particles: usize| {
+        for (k, r) in records.iter_mut().enumerate() {
+            r.result.plunge = Some(bowwave::twodt::run::PlungeMetrics {
+                x_plunge_over_l: 0.3 + 0.1 * k as f64,
+                y_plunge_over_l: 0.1 + 0.02 * k as f64,
+                i_og_over_s2: 0.6 - 0.2 * k as f64,
+                alpha_g_deg: 40.0 + 10.0 * k as f64,
+                jet_particles: particles,
+                ..Default::default()
+            });
+        }
+    };
+    let line = |t: &[String], start: &str| t.iter().find(|l| l.starts_with(start)).cloned().unwrap();
+    with_jets(&mut records, 20);
+    let few = trends(&records);
+    for metric in ["I_OG/S² falls", "α_G rises"] {
+        assert!(line(&few, metric).contains("not assessed"), "{few:?}");
+    }
+    assert!(line(&few, "x_plunge/L grows").contains(": holds"), "{few:?}");
+    let text = report("jet-guard", "athena", "approximation", &records, &[], 2);
+    assert!(text.contains("read x_p, y_p and H_pj only"), "{text}");
+    with_jets(&mut records, RESOLVED_JET_PARTICLES);
+    let enough = trends(&records);
+    for metric in ["I_OG/S² falls", "α_G rises"] {
+        assert!(line(&enough, metric).contains(": holds"), "{enough:?}");
+    }
+    let text = report("jet-guard", "athena", "approximation", &records, &[], 2);
+    assert!(!text.contains("read x_p, y_p and H_pj only"), "{text}");
+}
+
 /// A convergence study: one Froude number at two spacings. Regression: the comparison paired each published
 /// row with the first case at its Froude number, so the finer case had no comparison rows, and the report
 /// tested the published trends over Fr on cases that all have the same Fr.

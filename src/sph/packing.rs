@@ -70,6 +70,7 @@ fn candidate_lists<const D: usize>(all: &[SVector<f64, D>], n_moving: usize, rea
                     list.push(j as u32);
                 }
             });
+            list.shrink_to_fit();
             list
         })
         .collect()
@@ -172,6 +173,7 @@ pub fn pack<const D: usize>(
             .map(|(a, b)| (a - b).norm())
             .fold(0.0, f64::max);
         if drift >= 0.5 * skin {
+            drop(std::mem::take(&mut lists));
             lists = candidate_lists(&all, n, reach);
             built_at.copy_from_slice(moving);
         }

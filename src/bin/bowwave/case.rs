@@ -59,7 +59,8 @@ impl RunArgs {
 
 #[derive(Args)]
 pub struct ValidateArgs {
-    /// A built-in case to validate (default: all of them).
+    /// A built-in case to validate (default: all of them), or `tank-3d`: the still tank in 3D (water H deep in
+    /// a 1 × 0.5 H box, to t√(g/H) = 20; default resolution 20, `--ghosts images` for image faces).
     pub case: Option<String>,
     /// Resolution (reference length / dx); default: each case's validation resolution.
     #[arg(long)]
