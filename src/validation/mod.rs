@@ -82,6 +82,7 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "dam-break-mm" => Some(50.0),
         "dam-break" => Some(80.0),
         "jet-wall" | "jet-plate" | "jet-floor" => Some(20.0),
+        TANK_3D => Some(tank_3d::FULL_RESOLUTION),
         _ => None,
     }
 }
@@ -197,7 +198,7 @@ pub fn validate_cli(
     let mut ok = true;
     for n in names {
         if n == TANK_3D {
-            let res = res.unwrap_or(tank_3d::FULL_RESOLUTION);
+            let res = res.or(full_resolution(n)).unwrap_or(tank_3d::FULL_RESOLUTION);
             let ghosts = ghosts.unwrap_or(GhostKind::Fixed);
             eprintln!("validating {n} at resolution {res:.0} ...");
             let r = tank_3d::tank_at_rest(res, ghosts, true)?;
