@@ -195,17 +195,22 @@ pub fn validate_cli(
         None => cases::builtin::builtin_names().into_iter().chain([TANK_3D]).collect(),
     };
     let mut all = vec![];
+    let mut blown = vec![];
     let mut ok = true;
     for n in names {
         if n == TANK_3D {
             let res = res.or(full_resolution(n)).unwrap_or(tank_3d::FULL_RESOLUTION);
             let ghosts = ghosts.unwrap_or(GhostKind::Fixed);
             eprintln!("validating {n} at resolution {res:.0} ...");
-            let r = tank_3d::tank_at_rest(res, ghosts, true)?;
-            eprintln!("{n}: {} fluid particles, {} steps", r.particles, r.steps);
-            let c = r.checks();
-            ok &= c.iter().all(|c| c.pass());
-            all.extend(c);
+            match tank_3d::tank_at_rest(res, ghosts, true)? {
+                Ok(r) => {
+                    eprintln!("{n}: {} fluid particles, {} steps", r.particles, r.steps);
+                    let c = r.checks();
+                    ok &= c.iter().all(|c| c.pass());
+                    all.extend(c);
+                }
+                Err(b) => ok &= record_blowup(n, &b, &mut blown),
+            }
             continue;
         }
         let mut c = cases::load(n)?;
@@ -226,8 +231,7 @@ pub fn validate_cli(
             },
         )?;
         if let Some(b) = &r.blowup {
-            eprintln!("{n}: blew up: {b}");
-            ok = false;
+            ok &= record_blowup(n, b, &mut blown);
             continue;
         }
         if let Some(dir) = out {
@@ -242,5 +246,41 @@ pub fn validate_cli(
         all.extend(c);
     }
     print_checks(&all);
+    for line in &blown {
+        println!("{line}");
+    }
     Ok(ok)
+}
+
+/// A case of a `validate` run that blew up: says so now, keeps a line for the end of the table (the case has
+/// no checks to print) and returns `false` (the run fails). The other cases go on.
+fn record_blowup(case: &str, b: &impl std::fmt::Display, blown: &mut Vec<String>) -> bool {
+    eprintln!("{case}: blew up: {b}");
+    blown.push(format!("{case:<26} blew up, no checks: {b}  FAIL"));
+    false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sph::solver::{BlowUp, BlowUpReason};
+
+    /// Regression: a blow-up of the 3D tank in `bowwave validate` (no case named) used to end the whole run with
+    /// an error, the cases after it never run. It is now recorded as the 2D cases' blow-ups are: the run fails,
+    /// the case is listed under the table with its diagnosis, and the loop goes on.
+    #[test]
+    fn a_case_that_blows_up_fails_the_validation_and_is_listed_with_its_diagnosis() {
+        let b = BlowUp {
+            reason: BlowUpReason::NotFinite,
+            time: 1.5,
+            step: 42,
+            particle: None,
+        };
+        let mut blown = vec![];
+        assert!(!record_blowup(TANK_3D, &b, &mut blown));
+        assert_eq!(blown.len(), 1);
+        assert!(blown[0].starts_with(TANK_3D), "{}", blown[0]);
+        assert!(blown[0].contains(&b.to_string()), "{}", blown[0]);
+        assert!(blown[0].ends_with("FAIL"), "{}", blown[0]);
+    }
 }

@@ -7,6 +7,7 @@ use super::Check;
 use crate::cases::box_tank::BoxTank;
 use crate::sph::diagnostics::energies;
 use crate::sph::polyline_wall::GhostKind;
+use crate::sph::solver::BlowUp;
 use nalgebra::Vector3;
 
 const G: f64 = 9.81;
@@ -45,7 +46,10 @@ pub struct TankAtRest {
 
 /// Runs the tank at H/dx = `res` with faces of `ghosts` (edges and vertices are fixed ghosts either way) and
 /// measures it. Averages every 5 steps from t* = 15 (about 40 samples at H/dx 10).
-pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Result<TankAtRest> {
+///
+/// The outer error is a tank that cannot be built (a bad resolution); the inner one, a run that blew up, with its
+/// diagnosis, so that a caller running several cases can record it and go on.
+pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Result<Result<TankAtRest, BlowUp>> {
     anyhow::ensure!(
         res.is_finite() && res >= 2.0,
         "tank-3d: resolution H/dx must be a number ≥ 2, got {res}"
@@ -75,7 +79,12 @@ pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Resu
     });
     let (mut force, mut bottom, mut samples) = (0.0, 0.0, 0.0);
     while sim.time < END_T_STAR * ts {
-        sim.step().map_err(|b| anyhow::anyhow!("tank-3d at H/dx {res}: {b}"))?;
+        if let Err(b) = sim.step() {
+            if let Some(bar) = &bar {
+                bar.finish_and_clear();
+            }
+            return Ok(Err(b));
+        }
         if sim.time > AVERAGE_FROM * ts && sim.steps.is_multiple_of(5) {
             sim.refresh();
             force -= sim.boundary_forces()[0].z / (m * G);
@@ -110,7 +119,7 @@ pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Resu
         .collect();
     let rho_mean = between.iter().sum::<f64>() / between.len() as f64;
     let weight_per_area = m * G / (tank.tank.x * tank.tank.y);
-    Ok(TankAtRest {
+    Ok(Ok(TankAtRest {
         res,
         ghosts,
         kinetic: energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic / (m * G * H),
@@ -119,7 +128,7 @@ pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Resu
         gradient: (p_low - p_high) / (z_high - z_low) / (rho_mean * G),
         particles: sim.n_fluid(),
         steps: sim.steps,
-    })
+    }))
 }
 
 impl TankAtRest {
