@@ -123,6 +123,23 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
         .all(|l| l.starts_with("athena,approximation,")));
     let manifest = std::fs::read_to_string(out.join("manifest.json")).unwrap();
     assert!(manifest.contains("\"git_commit\"") && manifest.contains("\"bowwave_version\""));
+    // Each case records the build that ran it, and the manifest lists it per case.
+    let m: serde_json::Value = serde_json::from_str(&manifest).unwrap();
+    for (rec, listed) in runner::collect_finished(&study, &out)
+        .iter()
+        .zip(m["cases"].as_array().unwrap())
+    {
+        let commit = rec.git_commit.as_deref().expect("the case's build is recorded");
+        assert!(!commit.is_empty());
+        assert_eq!(listed["git_commit"].as_str(), Some(commit));
+    }
+    // A record written before that field existed still counts as finished, with no build.
+    let record = runner::case_dir(&out, &study.cases[0]).join("case.json");
+    let mut old: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&record).unwrap()).unwrap();
+    old.as_object_mut().unwrap().remove("git_commit");
+    std::fs::write(&record, serde_json::to_string(&old).unwrap()).unwrap();
+    let rec = runner::finished(&out, &study.cases[0]).expect("an older record still reads");
+    assert_eq!(rec.git_commit, None);
     for f in ["report.md", "plunge_x.png", "snapshots.png", "wave_pattern_fr0.640.png"] {
         assert!(out.join(f).is_file(), "{f} missing");
     }

@@ -38,6 +38,11 @@ pub struct StudyOptions {
 pub struct CaseRecord {
     pub spec: CaseSpec,
     pub result: TwoDtResult,
+    /// The git commit of the build that ran the case (`BOWWAVE_GIT_COMMIT`): a study's cases may be run by
+    /// different builds on different machines (`--case N`), and the manifest lists each one's. `None` in
+    /// records written before this field existed.
+    #[serde(default)]
+    pub git_commit: Option<String>,
 }
 
 /// Folder of a case.
@@ -109,6 +114,7 @@ fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSu
 #[derive(Serialize)]
 struct Manifest<'a> {
     bowwave_version: &'a str,
+    /// The build that wrote this manifest (each case's own is in `cases`).
     git_commit: &'a str,
     study_file: String,
     hull_file: String,
@@ -121,6 +127,8 @@ struct Manifest<'a> {
 struct ManifestCase<'a> {
     spec: &'a CaseSpec,
     status: &'static str,
+    /// The build that ran the case, if recorded.
+    git_commit: Option<String>,
     wall_seconds: Option<f64>,
     cpu_seconds: Option<f64>,
     particles: Option<usize>,
@@ -146,6 +154,7 @@ pub fn write_manifest(study: &Study, out: &Path) -> anyhow::Result<()> {
                     Some(r) if r.plunged => "plunged",
                     Some(_) => "no plunge",
                 },
+                git_commit: rec.as_ref().and_then(|r| r.git_commit.clone()),
                 wall_seconds: r.map(|r| r.wall_seconds),
                 cpu_seconds: r.map(|r| r.cpu_seconds),
                 particles: r.map(|r| r.particles),
@@ -277,6 +286,7 @@ fn run_one(
     let rec = CaseRecord {
         spec: spec.clone(),
         result,
+        git_commit: Some(env!("BOWWAVE_GIT_COMMIT").to_string()),
     };
     write_atomic(&dir.join("case.json"), serde_json::to_string_pretty(&rec)?.as_bytes())?;
     Ok(())
