@@ -314,6 +314,85 @@ fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `study --status` tells each case's state from the output folder alone: finished, stopped part-way with
+/// the x/L and steps of its checkpoint (and whether a run would go on from it), or not started; a changed
+/// configuration is reported as such, not as the finished or resumable case.
+#[test]
+fn status_tells_finished_stopped_and_unstarted_cases_apart() {
+    use bowwave::studies::status::{remaining_seconds, status, CaseState};
+    let (study, dir) = fresh_study(
+        &format!("status-{}", std::process::id()),
+        "froude = [0.64, 0.6, 0.55]\n[resolution]\ndx = [4e-3, 4e-3, 4e-3]\n[stop]\nuntil = 0.05\n",
+    );
+    let out = dir.join("out");
+    let only = |case: usize, halt: Option<u64>| runner::StudyOptions {
+        case: Some(case),
+        checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
+            halt_at_step: halt,
+            ..Default::default()
+        },
+        ..serial_options(&out)
+    };
+    assert_eq!(runner::run_cases(&study, &only(1, None)).unwrap(), 1);
+    let steps = runner::collect_finished(&study, &out)[0].result.steps;
+    runner::run_cases(&study, &only(2, Some(steps / 2))).expect_err("case 2 stopped part-way");
+    let states = status(&study, &out).unwrap();
+    assert_eq!(states.len(), 3);
+    match &states[0].state {
+        CaseState::Finished(rec) => assert_eq!(rec.result.steps, steps),
+        s => panic!("case 1 finished, got {s:?}"),
+    }
+    let p = match &states[1].state {
+        CaseState::InProgress(p) => p.clone(),
+        s => panic!("case 2 stopped part-way, got {s:?}"),
+    };
+    assert!(p.same_configuration, "{p:?}");
+    assert!(p.steps >= steps / 2 && p.steps < steps, "{p:?}");
+    assert!(p.x_over_l > p.x_start && p.x_over_l < 0.05, "{p:?}");
+    assert!((p.x_stop - 0.05).abs() < 1e-12, "{p:?}");
+    assert!(
+        p.wall_seconds > 0.0 && remaining_seconds(&p).is_some_and(|s| s > 0.0),
+        "{p:?}"
+    );
+    assert!(
+        matches!(states[2].state, CaseState::NotStarted),
+        "{:?}",
+        states[2].state
+    );
+    let m: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("manifest.json")).unwrap()).unwrap();
+    let listed: Vec<_> = m["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| c["status"].clone())
+        .collect();
+    assert_eq!(listed, ["no plunge", "stopped part-way (checkpoint)", "not run"]);
+    // The same folders read with another spacing: nothing there is this configuration's.
+    let changed = Study {
+        cases: study
+            .cases
+            .iter()
+            .map(|c| bowwave::studies::study_file::CaseSpec {
+                dx: c.dx * 0.9,
+                ..c.clone()
+            })
+            .collect(),
+        ..study.clone()
+    };
+    let states = status(&changed, &out).unwrap();
+    assert!(
+        matches!(states[0].state, CaseState::OtherConfiguration),
+        "{:?}",
+        states[0].state
+    );
+    match &states[1].state {
+        CaseState::InProgress(p) => assert!(!p.same_configuration, "{p:?}"),
+        s => panic!("case 2's checkpoint is still there, got {s:?}"),
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// Every shipped study file, the README's main job among them, reads and resolves to cases.
 #[test]
 fn shipped_study_files_read() {

@@ -69,6 +69,36 @@ impl Checkpoint {
         Ok(Checkpoint { header, arrays })
     }
 
+    /// Reads only the JSON header (the small state), not the arrays: for a look at a run in progress
+    /// (`bowwave study --status`) without loading its particles. Errors name the file, as [`Checkpoint::read`].
+    pub fn read_header(path: &Path) -> anyhow::Result<serde_json::Value> {
+        use std::io::Read;
+        let bad = |what: &str| anyhow::anyhow!("checkpoint {}: {what}", path.display());
+        let mut f =
+            std::fs::File::open(path).map_err(|e| anyhow::anyhow!("cannot read checkpoint {}: {e}", path.display()))?;
+        let mut magic = Vec::new();
+        (&mut f)
+            .take(MAGIC.len() as u64)
+            .read_to_end(&mut magic)
+            .map_err(|e| bad(&e.to_string()))?;
+        if magic != MAGIC {
+            return Err(bad(
+                "not a bowwave checkpoint (expected the first line `bowwave checkpoint 1`)",
+            ));
+        }
+        let mut len = [0u8; 8];
+        f.read_exact(&mut len).map_err(|_| bad("truncated"))?;
+        let n = usize::try_from(u64::from_le_bytes(len)).map_err(|_| bad("length too large"))?;
+        let mut header = Vec::new();
+        f.take(n as u64)
+            .read_to_end(&mut header)
+            .map_err(|e| bad(&format!("header: {e}")))?;
+        if header.len() != n {
+            return Err(bad("truncated"));
+        }
+        serde_json::from_slice(&header).map_err(|e| bad(&format!("header: {e}")))
+    }
+
     /// An array by name, with an error naming the file when it is missing or not `len` long.
     pub fn array(&self, path: &Path, name: &str, len: Option<usize>) -> anyhow::Result<&[f64]> {
         let v = self
@@ -126,6 +156,7 @@ mod tests {
         c.write(&path).unwrap();
         let back = Checkpoint::read(&path).unwrap();
         assert_eq!(back.header, c.header);
+        assert_eq!(Checkpoint::read_header(&path).unwrap(), c.header);
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         assert_eq!(bits(&back.arrays["a"]), bits(&c.arrays["a"]));
         assert!(back.arrays["empty"].is_empty());
@@ -133,8 +164,13 @@ mod tests {
         std::fs::write(&path, &bytes[..bytes.len() - 3]).unwrap();
         let e = format!("{:#}", Checkpoint::read(&path).unwrap_err());
         assert!(e.contains("c.bin") && e.contains("truncated"), "{e}");
+        std::fs::write(&path, &bytes[..MAGIC.len() + 8 + 5]).unwrap();
+        let e = format!("{:#}", Checkpoint::read_header(&path).unwrap_err());
+        assert!(e.contains("c.bin") && e.contains("truncated"), "{e}");
         std::fs::write(&path, b"hello").unwrap();
         let e = format!("{:#}", Checkpoint::read(&path).unwrap_err());
+        assert!(e.contains("not a bowwave checkpoint"), "{e}");
+        let e = format!("{:#}", Checkpoint::read_header(&path).unwrap_err());
         assert!(e.contains("not a bowwave checkpoint"), "{e}");
         std::fs::remove_dir_all(&dir).ok();
     }

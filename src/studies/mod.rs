@@ -1,12 +1,13 @@
 //! Froude sweeps: a study file (`study_file`) resolved into cases, run resumably and in parallel (`runner`),
-//! gathered into tables and a report against the published jets (`collect`) and figures (`figures`).
-//! Studies orchestrate; they hold no physics.
+//! gathered into tables and a report against the published jets (`collect`) and figures (`figures`);
+//! `status` tells where each case stands. Studies orchestrate; they hold no physics.
 
 pub mod charts;
 pub mod collect;
 pub mod figures;
 pub mod runner;
 pub mod slab;
+pub mod status;
 pub mod study_file;
 pub mod twodt_chart;
 pub mod twodt_convergence;

@@ -149,6 +149,9 @@ pub fn write_manifest(study: &Study, out: &Path) -> anyhow::Result<()> {
             ManifestCase {
                 spec,
                 status: match r {
+                    None if case_dir(out, spec).join(crate::twodt::checkpoint::FILE).exists() => {
+                        "stopped part-way (checkpoint)"
+                    }
                     None => "not run",
                     Some(r) if r.blowup.is_some() => "stopped early",
                     Some(r) if r.plunged => "plunged",

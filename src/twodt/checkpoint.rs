@@ -178,6 +178,39 @@ pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f6
     c.write(path)
 }
 
+/// Where a saved run stands, from its checkpoint's header alone (the particles are not read).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Saved {
+    /// The configuration it belongs to ([`fingerprint`]).
+    pub fingerprint: String,
+    /// Simulated time and time steps done.
+    pub time: f64,
+    pub steps: u64,
+    /// Where the passage will stop, x/L: the give-up point of a plunge search, or the plunge plus its margin
+    /// once found.
+    pub x_stop: f64,
+    /// Whether the plunge has been found already.
+    pub plunged: bool,
+    /// Wall and CPU seconds spent on the run so far, over all its sessions.
+    pub wall_seconds: f64,
+    pub cpu_seconds: f64,
+}
+
+/// Reads the header of the checkpoint at `path`; errors name the file and what is wrong.
+pub fn peek(path: &Path) -> anyhow::Result<Saved> {
+    let h: Header = serde_json::from_value(Checkpoint::read_header(path)?)
+        .map_err(|e| anyhow::anyhow!("checkpoint {}: header: {e}", path.display()))?;
+    Ok(Saved {
+        fingerprint: h.fingerprint,
+        time: h.time,
+        steps: h.steps,
+        x_stop: h.x_stop,
+        plunged: h.plunge.is_some(),
+        wall_seconds: h.wall_seconds,
+        cpu_seconds: h.cpu_seconds,
+    })
+}
+
 /// Why a checkpoint was not resumed.
 #[derive(Debug, thiserror::Error)]
 #[error("checkpoint {} is of another configuration", .0.display())]

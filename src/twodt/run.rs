@@ -565,6 +565,45 @@ fn resume(
     }
 }
 
+/// A run stopped part-way, as its checkpoint tells: how far it got, and whether it would be resumed.
+#[derive(Clone, Debug)]
+pub struct Progress {
+    /// x/L of the section at the checkpoint.
+    pub x_over_l: f64,
+    /// x/L where the run starts (the stem side of the passage) and where it will stop.
+    pub x_start: f64,
+    pub x_stop: f64,
+    pub steps: u64,
+    pub plunged: bool,
+    pub wall_seconds: f64,
+    pub cpu_seconds: f64,
+    /// The checkpoint belongs to `cfg`: running the case goes on from it. When false, a run of `cfg`
+    /// starts afresh and overwrites it.
+    pub same_configuration: bool,
+}
+
+/// The progress of the run of `cfg` whose checkpoint is in `dir`, or `None` when there is no checkpoint. Builds
+/// the scene unpacked (seconds, not the packing's minutes) to tell whether the checkpoint is of this
+/// configuration, as a resumed run does, and where its section is.
+pub fn progress(hull: &Arc<HullSurface>, cfg: &TwoDtConfig, dir: &Path) -> anyhow::Result<Option<Progress>> {
+    let path = dir.join(checkpoint::FILE);
+    if !path.exists() {
+        return Ok(None);
+    }
+    let saved = checkpoint::peek(&path)?;
+    let scene = build(hull.clone(), &cfg.unpacked())?;
+    Ok(Some(Progress {
+        x_over_l: scene.profile.x_at(saved.time),
+        x_start: scene.geom.x0,
+        x_stop: saved.x_stop,
+        steps: saved.steps,
+        plunged: saved.plunged,
+        wall_seconds: saved.wall_seconds,
+        cpu_seconds: saved.cpu_seconds,
+        same_configuration: saved.fingerprint == checkpoint::fingerprint(cfg, &scene),
+    }))
+}
+
 /// The metrics rows as CSV: the fields of [`TwoDtResult`] in order, those of the plunge flattened in place
 /// (empty when there was no plunge). One header for all rows, taken from a result with a plunge.
 pub fn metrics_csv(results: &[TwoDtResult]) -> String {

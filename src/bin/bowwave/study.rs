@@ -25,6 +25,11 @@ pub struct StudyArgs {
     /// Print each case's particle count, estimated steps and run time, and run nothing.
     #[arg(long)]
     pub dry_run: bool,
+    /// Print where each case stands in the output folder (finished with its outcome; stopped part-way with
+    /// the x/L its checkpoint reached, its steps, the time spent and the time left to its stop point at its
+    /// pace so far; or not started), and run nothing.
+    #[arg(long)]
+    pub status: bool,
     /// Minutes of wall time between checkpoints of the running case (CASE/checkpoint.bin; 0: none): an
     /// interrupted study loses at most this much of the case in progress, and goes on from it when run
     /// again (to the same bits). `--force` ignores checkpoints too.
@@ -52,6 +57,10 @@ impl StudyArgs {
             .unwrap_or_else(|| PathBuf::from("out").join(format!("study-{}", study.spec.name)));
         if self.dry_run {
             print_dry_run(&study)?;
+            return Ok(());
+        }
+        if self.status {
+            print_status(&study, &out)?;
             return Ok(());
         }
         if !self.collect {
@@ -101,5 +110,60 @@ fn print_dry_run(study: &studies::study_file::Study) -> anyhow::Result<()> {
         est.iter().map(|e| e.seconds).sum::<f64>(),
         studies::runner::REFERENCE_THROUGHPUT
     );
+    Ok(())
+}
+
+/// `--status`: one line per case.
+fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> anyhow::Result<()> {
+    use studies::status::CaseState;
+    println!("study {} in {}", study.spec.name, out.display());
+    println!("case  Fr      dx/L       state");
+    for c in studies::status::status(study, out)? {
+        let state = match &c.state {
+            CaseState::Finished(rec) => {
+                let r = &rec.result;
+                let outcome = match (&r.blowup, &r.plunge) {
+                    (Some(b), _) => format!("stopped early ({b})"),
+                    (None, Some(p)) if r.plunged => format!("plunged at x/L {:.4}", p.x_plunge_over_l),
+                    _ => format!("no plunge up to x/L {:.4}", r.x_end_over_l),
+                };
+                format!(
+                    "finished: {outcome}; {} particles, {} steps, {:.0} s wall, build {}",
+                    r.particles,
+                    r.steps,
+                    r.wall_seconds,
+                    rec.git_commit.as_deref().unwrap_or("not recorded")
+                )
+            }
+            CaseState::InProgress(p) => {
+                let left = studies::status::remaining_seconds(p)
+                    .map(|s| {
+                        format!(
+                            ", about {:.1} h more to x/L {:.3} at its pace so far",
+                            s / 3600.0,
+                            p.x_stop
+                        )
+                    })
+                    .unwrap_or_default();
+                format!(
+                    "{}: checkpoint at x/L {:.4} (from {:.3}), {} steps, {:.2} h wall{}{}",
+                    if p.same_configuration {
+                        "in progress"
+                    } else {
+                        "checkpoint of another configuration (a run starts afresh)"
+                    },
+                    p.x_over_l,
+                    p.x_start,
+                    p.steps,
+                    p.wall_seconds / 3600.0,
+                    if p.plunged { ", plunge found" } else { "" },
+                    if p.same_configuration { left } else { String::new() },
+                )
+            }
+            CaseState::OtherConfiguration => "finished with another configuration: runs again".into(),
+            CaseState::NotStarted => "not started".into(),
+        };
+        println!("{:4}  {:<6}  {:.3e}  {state}", c.spec.index, c.spec.fr, c.spec.dx);
+    }
     Ok(())
 }

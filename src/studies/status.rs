@@ -1,0 +1,74 @@
+//! Where each case of a study stands, without running anything (`bowwave study --status`): finished (its
+//! record), stopped part-way (its checkpoint: the x/L reached, steps, time spent, and whether running the case
+//! again goes on from there), or not started. For sweeps whose cases run for hours, case by case, under a
+//! batch scheduler or over several sessions.
+
+use super::runner::{case_dir, finished, CaseRecord};
+use super::study_file::{CaseSpec, Study};
+use crate::twodt::run::Progress;
+use std::path::Path;
+
+/// The state of one case in an output folder.
+#[derive(Clone, Debug)]
+pub enum CaseState {
+    /// Finished with the study's current configuration.
+    Finished(Box<CaseRecord>),
+    /// Stopped part-way with a checkpoint (of this configuration or, if `same_configuration` is false, of an
+    /// earlier one that a run would overwrite).
+    InProgress(Progress),
+    /// A finished record exists but of another configuration: the case runs again.
+    OtherConfiguration,
+    NotStarted,
+}
+
+/// A case and its state.
+#[derive(Clone, Debug)]
+pub struct CaseStatus {
+    pub spec: CaseSpec,
+    pub state: CaseState,
+}
+
+/// The state of every case of `study` in `out`, in study order. Only cases with a checkpoint build their
+/// scene (unpacked), to read where the checkpoint's section is.
+pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
+    let mut hull = None;
+    study
+        .cases
+        .iter()
+        .map(|spec| {
+            let dir = case_dir(out, spec);
+            let state = if let Some(rec) = finished(out, spec) {
+                CaseState::Finished(Box::new(rec))
+            } else if dir.join(crate::twodt::checkpoint::FILE).exists() {
+                let surface = match &hull {
+                    Some(h) => std::sync::Arc::clone(h),
+                    None => {
+                        let offsets = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
+                        let h = std::sync::Arc::new(crate::geometry::surface::HullSurface::new(&offsets));
+                        hull = Some(h.clone());
+                        h
+                    }
+                };
+                match crate::twodt::run::progress(&surface, &spec.config(), &dir)? {
+                    Some(p) => CaseState::InProgress(p),
+                    None => CaseState::NotStarted,
+                }
+            } else if dir.join("case.json").exists() {
+                CaseState::OtherConfiguration
+            } else {
+                CaseState::NotStarted
+            };
+            Ok(CaseStatus {
+                spec: spec.clone(),
+                state,
+            })
+        })
+        .collect()
+}
+
+/// Wall seconds still needed to reach the run's stop point at the pace it has kept so far (packing and
+/// settling included, so an overestimate early on); `None` before the section has moved.
+pub fn remaining_seconds(p: &Progress) -> Option<f64> {
+    let done = p.x_over_l - p.x_start;
+    (done > 0.0).then(|| (p.x_stop - p.x_over_l).max(0.0) / done * p.wall_seconds)
+}
