@@ -38,6 +38,21 @@ fn serial_options(out: &Path) -> runner::StudyOptions {
     }
 }
 
+/// The same study with every spacing 10 % finer: another configuration in the same case folders.
+fn finer(study: &Study) -> Study {
+    Study {
+        cases: study
+            .cases
+            .iter()
+            .map(|c| bowwave::studies::study_file::CaseSpec {
+                dx: c.dx * 0.9,
+                ..c.clone()
+            })
+            .collect(),
+        ..study.clone()
+    }
+}
+
 fn error_of(dir: &Path, body: &str) -> String {
     let path = write_study(dir, "bad", body);
     format!(
@@ -144,17 +159,7 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
         assert!(out.join(f).is_file(), "{f} missing");
     }
     // A changed configuration is not mistaken for the finished one.
-    let changed = Study {
-        cases: study
-            .cases
-            .iter()
-            .map(|c| bowwave::studies::study_file::CaseSpec {
-                dx: c.dx * 0.9,
-                ..c.clone()
-            })
-            .collect(),
-        ..study.clone()
-    };
+    let changed = finer(&study);
     assert!(runner::collect_finished(&changed, &out).is_empty());
 }
 
@@ -369,17 +374,7 @@ fn status_tells_finished_stopped_and_unstarted_cases_apart() {
         .collect();
     assert_eq!(listed, ["no plunge", "stopped part-way (checkpoint)", "not run"]);
     // The same folders read with another spacing: nothing there is this configuration's.
-    let changed = Study {
-        cases: study
-            .cases
-            .iter()
-            .map(|c| bowwave::studies::study_file::CaseSpec {
-                dx: c.dx * 0.9,
-                ..c.clone()
-            })
-            .collect(),
-        ..study.clone()
-    };
+    let changed = finer(&study);
     let states = status(&changed, &out).unwrap();
     assert!(
         matches!(states[0].state, CaseState::OtherConfiguration),
