@@ -105,7 +105,8 @@ pub fn dry_run_config(spec: &CaseSpec) -> crate::twodt::scene::TwoDtConfig {
     spec.config().unpacked()
 }
 
-fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {
+/// The study's hull file read and interpolated into its surface.
+pub(crate) fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {
     let offsets = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
     Ok(Arc::new(crate::geometry::surface::HullSurface::new(&offsets)))
 }

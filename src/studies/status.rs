@@ -3,7 +3,7 @@
 //! again goes on from there), or not started. For sweeps whose cases run for hours, case by case, under a
 //! batch scheduler or over several sessions.
 
-use super::runner::{case_dir, finished, CaseRecord};
+use super::runner::{case_dir, finished, surface, CaseRecord};
 use super::study_file::{CaseSpec, Study};
 use crate::twodt::run::Progress;
 use std::path::Path;
@@ -40,16 +40,11 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
             let state = if let Some(rec) = finished(out, spec) {
                 CaseState::Finished(Box::new(rec))
             } else if dir.join(crate::twodt::checkpoint::FILE).exists() {
-                let surface = match &hull {
+                let hull_surface = match &hull {
                     Some(h) => std::sync::Arc::clone(h),
-                    None => {
-                        let offsets = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
-                        let h = std::sync::Arc::new(crate::geometry::surface::HullSurface::new(&offsets));
-                        hull = Some(h.clone());
-                        h
-                    }
+                    None => hull.insert(surface(study)?).clone(),
                 };
-                match crate::twodt::run::progress(&surface, &spec.config(), &dir)? {
+                match crate::twodt::run::progress(&hull_surface, &spec.config(), &dir)? {
                     Some(p) => CaseState::InProgress(p),
                     None => CaseState::NotStarted,
                 }

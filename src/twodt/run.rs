@@ -545,8 +545,7 @@ fn resume(
     if !opts.checkpoint.resume || !path.exists() {
         return Ok(None);
     }
-    let mut scene = build(hull.clone(), &cfg.unpacked())?;
-    let fingerprint = checkpoint::fingerprint(cfg, &scene);
+    let (mut scene, fingerprint) = scene_to_restore_into(hull, cfg)?;
     match checkpoint::restore(path, &fingerprint, &mut scene) {
         Ok(p) => {
             log::info!(
@@ -563,6 +562,14 @@ fn resume(
         }
         Err(e) => Err(e),
     }
+}
+
+/// The scene a checkpoint of `cfg` is restored into, built unpacked (the checkpoint holds the particles), and
+/// the fingerprint that checkpoint must carry.
+fn scene_to_restore_into(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, String)> {
+    let scene = build(hull.clone(), &cfg.unpacked())?;
+    let fingerprint = checkpoint::fingerprint(cfg, &scene);
+    Ok((scene, fingerprint))
 }
 
 /// A run stopped part-way, as its checkpoint tells: how far it got, and whether it would be resumed.
@@ -591,7 +598,7 @@ pub fn progress(hull: &Arc<HullSurface>, cfg: &TwoDtConfig, dir: &Path) -> anyho
         return Ok(None);
     }
     let saved = checkpoint::peek(&path)?;
-    let scene = build(hull.clone(), &cfg.unpacked())?;
+    let (scene, fingerprint) = scene_to_restore_into(hull, cfg)?;
     Ok(Some(Progress {
         x_over_l: scene.profile.x_at(saved.time),
         x_start: scene.geom.x0,
@@ -600,7 +607,7 @@ pub fn progress(hull: &Arc<HullSurface>, cfg: &TwoDtConfig, dir: &Path) -> anyho
         plunged: saved.plunged,
         wall_seconds: saved.wall_seconds,
         cpu_seconds: saved.cpu_seconds,
-        same_configuration: saved.fingerprint == checkpoint::fingerprint(cfg, &scene),
+        same_configuration: saved.fingerprint == fingerprint,
     }))
 }
 
