@@ -117,6 +117,16 @@ fn bad_case_files_name_the_file_and_field() {
             good.replace("[output]", "[probes.cavity]\nafter = -1.0\n\n[output]"),
             "probes.cavity.after",
         ),
+        // Found by tests/fuzzed_input.rs: what lies outside the domain used to pass, and a block at 1e6 m
+        // sized the neighbour search past what memory holds.
+        (
+            good.replace("max = [2.0, 1.0]", "max = [2.0, 1e6]"),
+            "a rectangle inside the domain",
+        ),
+        (
+            good.replace("[2.0, 0.0], [2.0, 1.5]]", "[2.0, 0.0], [2.0, 1e6]]"),
+            "walls[0].points",
+        ),
     ];
     for (text, needle) in cases {
         let e = err_of(&text);
@@ -124,6 +134,34 @@ fn bad_case_files_name_the_file_and_field() {
         assert!(e.contains("bad.toml"), "error does not name the file: {e}");
         assert!(e.contains(needle), "error does not name `{needle}`: {e}");
     }
+}
+
+/// Regression (found by tests/fuzzed_input.rs): a case whose spacing leaves a block without a particle
+/// (`scales.length = 1e300`) failed to allocate its wall ghosts ("capacity overflow"), and one that asks
+/// for more particles than memory holds would abort; both are now errors that name the case and the cause,
+/// given before anything is allocated.
+#[test]
+fn case_too_coarse_or_too_large_for_its_resolution_is_refused_before_allocating() {
+    let good = cases::builtin::builtin_text("hydrostatic").unwrap();
+    let build_err = |text: &str, res: Option<f64>| {
+        let case = CaseFile::parse(text, "size.toml").unwrap();
+        format!("{:#}", cases::setup::build(&case, res).err().expect("must be refused"))
+    };
+    let e = build_err(&good.replace("length = 1.0 ", "length = 1e300 "), None);
+    assert!(
+        e.contains("`hydrostatic`") && e.contains("blocks[0]") && e.contains("one spacing"),
+        "{e}"
+    );
+    let e = build_err(good, Some(1e5));
+    assert!(
+        e.contains("`hydrostatic`") && e.contains("particles") && e.contains("at most"),
+        "{e}"
+    );
+    let e = build_err(good, Some(0.0));
+    assert!(e.contains("`hydrostatic`") && e.contains("resolution"), "{e}");
+    // The case itself builds at its own resolution.
+    let case = CaseFile::parse(good, "size.toml").unwrap();
+    assert!(cases::setup::build(&case, None).is_ok());
 }
 
 #[test]

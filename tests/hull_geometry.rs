@@ -115,6 +115,7 @@ fn every_malformed_hull_file_is_rejected_with_a_located_message() {
         ("14_", "expected 5 numbers"),
         ("15_", "length_m"),
         ("16_", "no header"),
+        ("17_", "offsets are fractions of the length"),
     ];
     for f in &files {
         let name = f.file_name().unwrap().to_string_lossy().to_string();

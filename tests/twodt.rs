@@ -87,6 +87,24 @@ fn athena() -> Arc<HullSurface> {
     Arc::new(HullSurface::new(&hull))
 }
 
+/// Regression (found while fuzzing the input files, tests/fuzzed_input.rs): a spacing typed a few orders
+/// too fine (`--dx 1e-7`, 4e12 particles) went on to allocate; the scene now refuses it first, naming dx/L.
+#[test]
+fn spacing_too_fine_for_memory_is_refused_before_allocating() {
+    let cfg = TwoDtConfig {
+        dx: Some(1e-7),
+        ..athena_cfg(None, Until::Plunge)
+    };
+    let e = format!(
+        "{:#}",
+        bowwave::twodt::scene::build(athena(), &cfg)
+            .err()
+            .expect("must be refused")
+    );
+    assert!(e.contains("dx/L = 1e-7") && e.contains("at most"), "{e}");
+    assert!(bowwave::twodt::scene::build(athena(), &athena_cfg(None, Until::Plunge)).is_ok());
+}
+
 /// The tank before the stem arrives (x0 = −0.4, run to x/L = −0.2, about 4 √(Z/g)): after the damped
 /// settling the water stays at rest: E_K below 1e-6 M g D at every output, the far-field level within
 /// 0.5 % of D.

@@ -57,7 +57,7 @@ fn sensor_no_water_touches_reads_air_not_a_distant_splash() {
 #[test]
 fn sensor_under_still_water_reads_the_hydrostatic_pressure() {
     let case = cases::load("hydrostatic").expect("built-in case");
-    let mut sim = setup::build(&case, Some(20.0));
+    let mut sim = setup::build(&case, Some(20.0)).unwrap();
     sim.refresh();
     let (h, rho_g) = (1.0, 1000.0 * 9.81);
     // Side wall at x = 0 (depths 0.25H to 0.75H), the floor's middle and the bottom corner: the Shepard

@@ -343,12 +343,20 @@ impl CaseFile {
                 "`min` and `max` as 2-component points with min < max (m)",
             ));
         }
+        // The domain is where particles may be: what starts outside it would stop the run at once, and its
+        // extent sizes the neighbour search (a block placed at 1e6 m passed and failed to allocate).
+        let inside = |p: &[f64], margin: f64| {
+            (0..d).all(|i| p[i] - margin >= self.domain.min[i] && p[i] + margin <= self.domain.max[i])
+        };
         for (k, w) in self.walls.iter().enumerate() {
             if w.points.len() < 2 || !w.points.iter().all(vec_ok) {
                 return Err(err(
                     &format!("walls[{k}].points"),
                     "at least two 2-component points (m)",
                 ));
+            }
+            if !w.points.iter().all(|p| inside(p, 0.0)) {
+                return Err(err(&format!("walls[{k}].points"), "points inside the domain (m)"));
             }
             if w.points
                 .windows(2)
@@ -380,6 +388,9 @@ impl CaseFile {
                             "`min` < `max`, 2-component points in metres",
                         ));
                     }
+                    if !inside(min, 0.0) || !inside(max, 0.0) {
+                        return Err(err(&format!("blocks[{k}]"), "a rectangle inside the domain (m)"));
+                    }
                     (velocity, velocity_gradient)
                 }
                 BlockSpec::Disc {
@@ -394,6 +405,9 @@ impl CaseFile {
                             &format!("blocks[{k}]"),
                             "a 2-component `centre` and a positive `radius` (m)",
                         ));
+                    }
+                    if !inside(centre, *radius) {
+                        return Err(err(&format!("blocks[{k}]"), "a disc inside the domain (m)"));
                     }
                     (velocity, velocity_gradient)
                 }

@@ -178,7 +178,7 @@ pub const ENERGY_GROWTH_LIMIT: f64 = 1e-3;
 
 /// Runs a case.
 pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
-    let mut sim = setup::build(case, opts.res);
+    let mut sim = setup::build(case, opts.res)?;
     let dx = sim.cfg.dx;
     let g = case.gravity_magnitude();
     let l = case.scales.length;

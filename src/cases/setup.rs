@@ -6,7 +6,7 @@ use crate::sph::{
     body_force::BodyForce,
     boundary::{Boundary, RigidMotion},
     eos::Eos,
-    particles::Fluid,
+    particles::{Fluid, MAX_PARTICLES},
     polyline_wall::PolylineWall,
     solver::{Simulation, SolverConfig},
 };
@@ -159,12 +159,62 @@ pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>
         .collect()
 }
 
-/// The whole simulation of a case at resolution `res` (length/dx; `None`: the case's default).
-pub fn build(case: &CaseFile, res: Option<f64>) -> Simulation<2> {
+/// Whether a case can be built at spacing `dx` (kernel support `support`): `dx` positive and finite, every
+/// rectangular block at least one spacing across, and the particles and the cells of the domain within
+/// [`MAX_PARTICLES`]. The error names the case, the field and what was expected.
+pub fn check_size(case: &CaseFile, dx: f64, support: f64) -> anyhow::Result<()> {
+    let name = &case.name;
+    anyhow::ensure!(
+        dx.is_finite() && dx > 0.0,
+        "case `{name}`: resolution: expected a positive number of particles per reference length (dx = {dx} m)"
+    );
+    let mut fluid = 0.0;
+    for (k, b) in case.blocks.iter().enumerate() {
+        match b {
+            BlockSpec::Rectangle { min, max, .. } => {
+                let (nx, ny) = (((max[0] - min[0]) / dx).round(), ((max[1] - min[1]) / dx).round());
+                anyhow::ensure!(
+                    nx >= 1.0 && ny >= 1.0,
+                    "case `{name}`: blocks[{k}]: expected at least one spacing across, but dx = {dx:e} m at this \
+                     resolution: raise `scales.resolution` (or --res)"
+                );
+                fluid += nx * ny;
+            }
+            BlockSpec::Disc { radius, .. } => fluid += std::f64::consts::PI * (radius / dx).powi(2) + 3.0,
+        }
+    }
+    let layers = (support / dx).ceil() + 1.0;
+    let ghosts: f64 = case
+        .walls
+        .iter()
+        .flat_map(|w| w.points.windows(2))
+        .map(|p| ((p[1][0] - p[0][0]).hypot(p[1][1] - p[0][1]) / dx + 2.0 * layers) * layers)
+        .sum();
+    let (lo, hi) = (&case.domain.min, &case.domain.max);
+    let cells: f64 = (0..2)
+        .map(|i| (hi[i] - lo[i] + 2.0 * support) / support + 1.0)
+        .product();
+    for (what, n) in [
+        ("particles (fluid and wall ghosts)", fluid + ghosts),
+        ("neighbour-search cells over the domain", cells),
+    ] {
+        anyhow::ensure!(
+            n <= MAX_PARTICLES,
+            "case `{name}`: about {n:.3e} {what} at dx = {dx:e} m: expected at most {MAX_PARTICLES:e} \
+             (lower the resolution, or shrink the blocks, walls or domain)"
+        );
+    }
+    Ok(())
+}
+
+/// The whole simulation of a case at resolution `res` (length/dx; `None`: the case's default), or an error
+/// if the case cannot be built at that resolution ([`check_size`]).
+pub fn build(case: &CaseFile, res: Option<f64>) -> anyhow::Result<Simulation<2>> {
     let dx = spacing(case, res);
     let cfg = solver_config(case, dx);
     let support = cfg.kernel.support_over_h() * cfg.h;
+    check_size(case, dx, support)?;
     let fl = fluid(case, dx, &cfg.eos, &cfg.body_force);
     let w = walls(case, dx, support);
-    Simulation::new(cfg, fl, w)
+    Ok(Simulation::new(cfg, fl, w))
 }

@@ -267,6 +267,17 @@ impl HullOffsets {
                     ),
                 ));
             }
+            // Offsets are fractions of L; a point a ship length or more from the centre plane or the
+            // waterline is a typo (a deck point at z/L = 1e6 passed every other check and made each
+            // section 1e10 samples long).
+            for (name, v) in [("y_over_L", row.y_over_l), ("z_over_L", row.z_over_l)] {
+                if v.abs() >= 1.0 {
+                    return Err(err(
+                        line,
+                        format!("`{name}` = {v}: offsets are fractions of the length, expected |{name}| < 1"),
+                    ));
+                }
+            }
             if !(0.0..=1.0).contains(&row.x_over_l) {
                 return Err(err(
                     line,

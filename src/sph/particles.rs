@@ -2,6 +2,12 @@
 
 use nalgebra::SVector;
 
+/// The most particles (fluid and ghosts), and neighbour-search cells, that a scene may ask for: 1e8, about
+/// 100 GB at the measured 0.75–1.1 KB per particle (BENCHMARKS.md), more than the machines this runs on
+/// hold. Scene builders check their estimate against it first, so that a spacing or a size typed wrong
+/// stops with an error naming it instead of a failed allocation.
+pub const MAX_PARTICLES: f64 = 1e8;
+
 /// The fluid particles. Every field has one entry per particle; `id` is the particle's index at creation,
 /// kept through the re-ordering by cell so outputs can follow a particle.
 #[derive(Clone, Debug, Default)]

@@ -266,6 +266,16 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let dx_c = cfg.coarse_ratio * dx_f;
     let width = cfg.width_over_beam * beam;
     let depth = cfg.depth_over_draft * draft;
+    // At most the whole tank at the fine spacing: a bound on what the graded rows will hold.
+    let bound = width * depth / (dx_f * dx_f);
+    anyhow::ensure!(
+        bound <= crate::sph::particles::MAX_PARTICLES,
+        "dx/L = {dx_f:e} in a tank {:.3} L wide and {:.3} L deep: up to {bound:.3e} particles, expected at most {:e} \
+         (a larger dx/L, or a smaller W/B or Z/D)",
+        width,
+        depth,
+        crate::sph::particles::MAX_PARTICLES
+    );
     let x0 = cfg.x0.unwrap_or(hull.x_range.0);
     let x_end = match cfg.until {
         Until::X(x) => x,

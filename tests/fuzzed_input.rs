@@ -1,0 +1,326 @@
+//! Bad input gets an error naming the file, never a panic: property tests that take the project's own case,
+//! hull and study files, damage them (a number swapped for a bad value, a line dropped or doubled, the text
+//! cut short, a stray character), and check that reading them, and building and stepping what still reads,
+//! never panics, and that every error names the file.
+
+use bowwave::cases::{setup, CaseFile};
+use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
+use bowwave::studies::study_file::Study;
+use proptest::prelude::*;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::{Path, PathBuf};
+
+/// Values a damaged number may become: wrong sign, zero, overflow, not finite, another type, empty.
+const BAD_VALUES: &[&str] = &[
+    "0",
+    "-1",
+    "1e300",
+    "-1e300",
+    "1e-300",
+    "nan",
+    "inf",
+    "-inf",
+    "\"text\"",
+    "[]",
+    "[1.0]",
+    "[1.0, 2.0, 3.0]",
+    "",
+    "true",
+    "{}",
+    "2",
+    "0.5",
+    "1e6",
+];
+
+/// Factors a number may be multiplied by: files that still read, with odd but valid values, reach the code
+/// behind the parser.
+const FACTORS: &[f64] = &[0.5, 0.9, 1.1, 2.0, -1.0, 10.0, 0.01];
+
+/// Stray characters.
+const STRAY: &[char] = &['=', ',', '[', ']', '"', '\n', '#', '-', '.', ' ', '{', '0'];
+
+/// One damage to a text; the indices are taken modulo what the text holds.
+#[derive(Clone, Debug)]
+enum Edit {
+    /// The k-th number becomes `BAD_VALUES[v]`.
+    Number(usize, usize),
+    /// The k-th number is multiplied by `FACTORS[f]`.
+    Scale(usize, usize),
+    DropLine(usize),
+    DoubleLine(usize),
+    /// The text ends at character k.
+    Cut(usize),
+    /// `STRAY[c]` is inserted before character k.
+    Insert(usize, usize),
+}
+
+fn edit() -> impl Strategy<Value = Edit> {
+    prop_oneof![
+        3 => (any::<usize>(), 0..BAD_VALUES.len()).prop_map(|(k, v)| Edit::Number(k, v)),
+        3 => (any::<usize>(), 0..FACTORS.len()).prop_map(|(k, f)| Edit::Scale(k, f)),
+        1 => any::<usize>().prop_map(Edit::DropLine),
+        1 => any::<usize>().prop_map(Edit::DoubleLine),
+        1 => any::<usize>().prop_map(Edit::Cut),
+        1 => (any::<usize>(), 0..STRAY.len()).prop_map(|(k, c)| Edit::Insert(k, c)),
+    ]
+}
+
+/// Byte ranges of the numbers in `text` (a digit, or a sign or point before a digit, and what follows of
+/// digits, points, exponents and signs).
+fn numbers(text: &str) -> Vec<(usize, usize)> {
+    let b = text.as_bytes();
+    let mut out = vec![];
+    let mut i = 0;
+    while i < b.len() {
+        let starts = b[i].is_ascii_digit()
+            || (matches!(b[i], b'-' | b'+' | b'.') && b.get(i + 1).is_some_and(u8::is_ascii_digit));
+        let inside_word = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
+        if starts && !inside_word {
+            let mut j = i + 1;
+            while j < b.len() && (b[j].is_ascii_digit() || matches!(b[j], b'.' | b'e' | b'E' | b'-' | b'+' | b'_')) {
+                j += 1;
+            }
+            out.push((i, j));
+            i = j;
+        } else {
+            i += 1;
+        }
+    }
+    out
+}
+
+fn apply(text: &str, edits: &[Edit]) -> String {
+    let mut t = text.to_string();
+    for e in edits {
+        match *e {
+            Edit::Number(k, v) => {
+                let n = numbers(&t);
+                if !n.is_empty() {
+                    let (a, b) = n[k % n.len()];
+                    t.replace_range(a..b, BAD_VALUES[v]);
+                }
+            }
+            Edit::Scale(k, f) => {
+                let n = numbers(&t);
+                if !n.is_empty() {
+                    let (a, b) = n[k % n.len()];
+                    if let Ok(x) = t[a..b].parse::<f64>() {
+                        t.replace_range(a..b, &format!("{:?}", x * FACTORS[f]));
+                    }
+                }
+            }
+            Edit::DropLine(k) | Edit::DoubleLine(k) => {
+                let mut lines: Vec<&str> = t.lines().collect();
+                if !lines.is_empty() {
+                    let k = k % lines.len();
+                    if matches!(e, Edit::DropLine(_)) {
+                        lines.remove(k);
+                    } else {
+                        lines.insert(k, lines[k]);
+                    }
+                }
+                t = lines.join("\n");
+            }
+            Edit::Cut(k) => {
+                let chars: Vec<char> = t.chars().collect();
+                t = chars[..k % (chars.len() + 1)].iter().collect();
+            }
+            Edit::Insert(k, c) => {
+                let mut chars: Vec<char> = t.chars().collect();
+                let k = k % (chars.len() + 1);
+                chars.insert(k, STRAY[c]);
+                t = chars.into_iter().collect();
+            }
+        }
+    }
+    t
+}
+
+/// Runs `f`, failing the property with the damaged text when it panics.
+fn no_panic<T>(what: &str, text: &str, f: impl FnOnce() -> T) -> Result<T, TestCaseError> {
+    catch_unwind(AssertUnwindSafe(f)).map_err(|p| {
+        let msg = p
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| p.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_default();
+        TestCaseError::fail(format!("{what} panicked ({msg}) on:\n{text}"))
+    })
+}
+
+fn project(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(rel)
+}
+
+/// Fluid particles and wall ghosts a case would have at spacing `dx`, from its blocks' areas and its walls'
+/// lengths (3 ghost layers per wall side, rounded up): the test builds only cases it can afford.
+fn estimated_particles(case: &CaseFile, dx: f64) -> f64 {
+    use bowwave::cases::case_file::BlockSpec;
+    let fluid: f64 = case
+        .blocks
+        .iter()
+        .map(|b| match b {
+            BlockSpec::Rectangle { min, max, .. } => (max[0] - min[0]) * (max[1] - min[1]),
+            BlockSpec::Disc { radius, .. } => std::f64::consts::PI * radius * radius,
+        })
+        .sum::<f64>()
+        / (dx * dx);
+    let walls: f64 = case
+        .walls
+        .iter()
+        .flat_map(|w| w.points.windows(2))
+        .map(|p| (p[1][0] - p[0][0]).hypot(p[1][1] - p[0][1]) / dx * 6.0)
+        .sum();
+    fluid + walls
+}
+
+const FILE: &str = "damaged.toml";
+
+/// 192 damaged files per property from a fixed seed, so that CI runs the same files every time;
+/// `PROPTEST_CASES=N PROPTEST_RNG_SEED=S` runs other and more of them (how the bugs behind the
+/// regression tests below were found).
+fn config() -> ProptestConfig {
+    let mut c = ProptestConfig::default();
+    if std::env::var_os("PROPTEST_CASES").is_none() {
+        c.cases = 192;
+    }
+    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
+        c.rng_seed = proptest::test_runner::RngSeed::Fixed(20261202);
+    }
+    c.failure_persistence = None;
+    c
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// A damaged built-in case reads as a case or as an error naming the file; what reads builds and takes
+    /// a few steps (or stops with a diagnosis) without a panic.
+    #[test]
+    fn damaged_case_files_give_errors_not_panics(
+        which in 0..bowwave::cases::builtin::BUILTIN.len(),
+        edits in prop::collection::vec(edit(), 1..4),
+    ) {
+        let text = apply(bowwave::cases::builtin::BUILTIN[which].1, &edits);
+        match no_panic("CaseFile::parse", &text, || CaseFile::parse(&text, FILE))? {
+            Err(e) => prop_assert!(e.to_string().contains(FILE), "error without the file's name: {e}"),
+            Ok(case) => {
+                let res = case.scales.resolution.min(10.0);
+                let dx = setup::spacing(&case, Some(res));
+                if estimated_particles(&case, dx) < 2e4 {
+                    no_panic("build and step", &text, || match setup::build(&case, Some(res)) {
+                        Ok(mut sim) => {
+                            for _ in 0..3 {
+                                if sim.step().is_err() {
+                                    break;
+                                }
+                            }
+                        }
+                        Err(e) => assert!(e.to_string().contains(&case.name), "error without the case's name: {e}"),
+                    })?;
+                }
+            }
+        }
+    }
+
+    /// A damaged hull file reads as a hull or as an error naming the file; a hull that reads gives its
+    /// sections without a panic.
+    #[test]
+    fn damaged_hull_files_give_errors_not_panics(
+        which in 0..3usize,
+        edits in prop::collection::vec(edit(), 1..4),
+    ) {
+        let name = ["hulls/athena.csv", "hulls/wigley.csv", "hulls/alliance.csv"][which];
+        let original = std::fs::read_to_string(project(name)).unwrap();
+        let text = apply(&original, &edits);
+        match no_panic("HullOffsets::parse", &text, || HullOffsets::parse(&text, "damaged.csv"))? {
+            Err(e) => prop_assert!(e.to_string().contains("damaged.csv"), "error without the file's name: {e}"),
+            Ok(h) => {
+                no_panic("HullSurface sections", &text, || {
+                    let s = HullSurface::new(&h);
+                    let (a, b) = s.x_range;
+                    for k in 0..=10 {
+                        let _ = s.section(a + (b - a) * k as f64 / 10.0, 1e-3);
+                    }
+                })?;
+            }
+        }
+    }
+
+    /// A damaged study file reads as a study or as an error naming the file (the hull's own errors name
+    /// the hull file); a study that reads gives each case's configuration without a panic.
+    #[test]
+    fn damaged_study_files_give_errors_not_panics(
+        which in 0..6usize,
+        edits in prop::collection::vec(edit(), 1..4),
+    ) {
+        let name = ["quick", "athena", "athena-trend", "athena-fr0.5-thesis-spacings", "alliance", "wigley"][which];
+        let original = std::fs::read_to_string(project(&format!("studies/{name}.toml"))).unwrap();
+        let text = apply(&original, &edits);
+        let dir = std::env::temp_dir().join(format!("bowwave-fuzz-study-{}", std::process::id()));
+        std::fs::create_dir_all(dir.join("studies")).unwrap();
+        std::fs::create_dir_all(dir.join("hulls")).unwrap();
+        for hull in ["athena", "wigley", "alliance"] {
+            let to = dir.join(format!("hulls/{hull}.csv"));
+            if !to.exists() {
+                std::fs::copy(project(&format!("hulls/{hull}.csv")), to).unwrap();
+            }
+        }
+        let path = dir.join("studies/damaged.toml");
+        std::fs::write(&path, &text).unwrap();
+        match no_panic("Study::read", &text, || Study::read(&path))? {
+            Err(e) => {
+                let e = format!("{e:#}");
+                prop_assert!(e.contains("damaged.toml") || e.contains("hulls/"), "error without a file's name: {e}");
+            }
+            Ok(study) => {
+                no_panic("case configurations", &text, || {
+                    for c in &study.cases {
+                        let _ = c.config();
+                    }
+                })?;
+            }
+        }
+    }
+}
+
+#[test]
+fn numbers_are_found_where_toml_and_csv_put_them() {
+    let t = "a = 1.5\nb = [-2, 3e-4]\nname = \"x2\"\nfr_0 = .5\n";
+    let found: Vec<&str> = numbers(t).iter().map(|&(a, b)| &t[a..b]).collect();
+    assert_eq!(found, ["1.5", "-2", "3e-4", ".5"]);
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// A checkpoint damaged on disk (bytes changed, the file cut short) reads back or gives an error naming
+    /// the file; a length field turned huge must not be allocated.
+    #[test]
+    fn damaged_checkpoints_give_errors_not_panics(
+        changes in prop::collection::vec((any::<usize>(), any::<u8>()), 0..4),
+        cut in any::<usize>(),
+    ) {
+        use bowwave::io::checkpoint::Checkpoint;
+        let dir = std::env::temp_dir().join(format!("bowwave-fuzz-ckpt-{}", std::process::id()));
+        let path = dir.join("damaged.bin");
+        let mut c = Checkpoint { header: serde_json::json!({"time": 0.25, "steps": 12}), ..Default::default() };
+        c.arrays.insert("pos_y".into(), vec![0.1, 0.2, 0.3]);
+        c.arrays.insert("rho".into(), vec![1000.0; 3]);
+        c.write(&path).unwrap();
+        let mut bytes = std::fs::read(&path).unwrap();
+        for (at, b) in changes {
+            let n = bytes.len();
+            bytes[at % n] = b;
+        }
+        bytes.truncate(cut % (bytes.len() + 1));
+        std::fs::write(&path, &bytes).unwrap();
+        let text = format!("{bytes:?}");
+        if let Err(e) = no_panic("Checkpoint::read", &text, || Checkpoint::read(&path))? {
+            prop_assert!(format!("{e:#}").contains("damaged.bin"), "{e:#}");
+        }
+        if let Err(e) = no_panic("Checkpoint::read_header", &text, || Checkpoint::read_header(&path))? {
+            prop_assert!(format!("{e:#}").contains("damaged.bin"), "{e:#}");
+        }
+    }
+}
