@@ -164,6 +164,22 @@ fn case_too_coarse_or_too_large_for_its_resolution_is_refused_before_allocating(
     assert!(cases::setup::build(&case, None).is_ok());
 }
 
+/// Regression: `bowwave run --end -1` (or NaN) ran no step and wrote its series and plots as if the run
+/// were done.
+#[test]
+fn end_time_that_is_not_positive_is_refused() {
+    let case = CaseFile::parse(cases::builtin::builtin_text("hydrostatic").unwrap(), "end.toml").unwrap();
+    for end in [-1.0, 0.0, f64::NAN] {
+        let opts = RunOptions {
+            res: Some(10.0),
+            end_time: Some(end),
+            ..Default::default()
+        };
+        let e = format!("{:#}", run(&case, &opts).err().expect("must be refused"));
+        assert!(e.contains("`hydrostatic`") && e.contains("end time"), "{end}: {e}");
+    }
+}
+
 #[test]
 fn unknown_case_name_lists_the_built_ins() {
     let e = cases::load("no-such-case").unwrap_err().to_string();

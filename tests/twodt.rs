@@ -105,6 +105,81 @@ fn spacing_too_fine_for_memory_is_refused_before_allocating() {
     assert!(bowwave::twodt::scene::build(athena(), &athena_cfg(None, Until::Plunge)).is_ok());
 }
 
+/// Regression (found by feeding `bowwave twodt` bad numbers): a negative c0, settling or output spacing, a
+/// zero output spacing (a frame at every step) or detection interval ran on; each is now refused with the
+/// option and what was expected.
+#[test]
+fn bad_twodt_options_are_refused_with_what_was_expected() {
+    let base = athena_cfg(None, Until::Plunge);
+    let cases: Vec<(TwoDtConfig, &str)> = vec![
+        (
+            TwoDtConfig {
+                c0: Some(-1.0),
+                ..base.clone()
+            },
+            "c0",
+        ),
+        (
+            TwoDtConfig {
+                settle_crossings: -1.0,
+                ..base.clone()
+            },
+            "settling",
+        ),
+        (
+            TwoDtConfig {
+                output_dx: 0.0,
+                ..base.clone()
+            },
+            "output spacing",
+        ),
+        (
+            TwoDtConfig {
+                output_dx: f64::NAN,
+                ..base.clone()
+            },
+            "output spacing",
+        ),
+        (
+            TwoDtConfig {
+                detect_every: 0,
+                ..base.clone()
+            },
+            "detection interval",
+        ),
+        (
+            TwoDtConfig {
+                after_plunge: -0.1,
+                ..base.clone()
+            },
+            "after the plunge",
+        ),
+        (
+            TwoDtConfig {
+                cfl: Some(0.0),
+                ..base.clone()
+            },
+            "CFL",
+        ),
+        (
+            TwoDtConfig {
+                fr: f64::NAN,
+                ..base.clone()
+            },
+            "Froude",
+        ),
+    ];
+    for (cfg, needle) in cases {
+        let e = format!(
+            "{:#}",
+            bowwave::twodt::scene::build(athena(), &cfg)
+                .err()
+                .expect("must be refused")
+        );
+        assert!(e.contains(needle) && e.contains("expected"), "{needle}: {e}");
+    }
+}
+
 /// The tank before the stem arrives (x0 = −0.4, run to x/L = −0.2, about 4 √(Z/g)): after the damped
 /// settling the water stays at rest: E_K below 1e-6 M g D at every output, the far-field level within
 /// 0.5 % of D.

@@ -178,6 +178,14 @@ pub const ENERGY_GROWTH_LIMIT: f64 = 1e-3;
 
 /// Runs a case.
 pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
+    if let Some(end) = opts.end_time {
+        // A NaN or negative end ran no step and wrote its outputs as if the run were done.
+        anyhow::ensure!(
+            end.is_finite() && end > 0.0,
+            "case `{}`: end time: expected a positive time in seconds, got {end}",
+            case.name
+        );
+    }
     let mut sim = setup::build(case, opts.res)?;
     let dx = sim.cfg.dx;
     let g = case.gravity_magnitude();

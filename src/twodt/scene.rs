@@ -107,6 +107,60 @@ pub struct TwoDtConfig {
 }
 
 impl TwoDtConfig {
+    /// Checks the values that [`build`] does not check against the hull (the spacing and the domain are
+    /// checked there): each error names the option and what was expected. Found by feeding `bowwave twodt`
+    /// bad numbers: a negative c0, settling or output spacing, or a detection interval of 0, ran on (an
+    /// output spacing of 0 writes at every step). Study files check their own fields when read.
+    pub fn check(&self) -> anyhow::Result<()> {
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        let non_negative = |v: f64| v.is_finite() && v >= 0.0;
+        anyhow::ensure!(positive(self.fr), "Froude number: expected > 0, got {}", self.fr);
+        if let Some(c0) = self.c0 {
+            anyhow::ensure!(positive(c0), "c0/√(gL): expected > 0, got {c0}");
+        }
+        if let Some(cfl) = self.cfl {
+            anyhow::ensure!(positive(cfl), "CFL: expected > 0, got {cfl}");
+        }
+        anyhow::ensure!(
+            non_negative(self.settle_crossings),
+            "settling: expected 0 or more acoustic crossings, got {}",
+            self.settle_crossings
+        );
+        anyhow::ensure!(
+            positive(self.output_dx),
+            "output spacing x/L: expected > 0, got {}",
+            self.output_dx
+        );
+        anyhow::ensure!(
+            non_negative(self.after_plunge),
+            "run-on after the plunge x/L: expected 0 or more, got {}",
+            self.after_plunge
+        );
+        anyhow::ensure!(
+            self.detect_every >= 1,
+            "detection interval: expected at least 1 step, got 0"
+        );
+        anyhow::ensure!(
+            positive(self.fine_depth_over_draft) && positive(self.coarse_height_over_draft),
+            "fine layer depth and coarse layer height / D: expected > 0, got {} and {}",
+            self.fine_depth_over_draft,
+            self.coarse_height_over_draft
+        );
+        if let Some(x) = self.give_up_at {
+            anyhow::ensure!(x.is_finite(), "give-up point x/L: expected a number, got {x}");
+        }
+        if let Some(d) = self.plunge_depth {
+            anyhow::ensure!(
+                d.is_finite() && d > 0.0 && d <= 1.0,
+                "plunge depth: expected in (0, 1], got {d}"
+            );
+        }
+        if let Some(g) = self.plunge_circulation {
+            anyhow::ensure!(g.is_finite(), "plunge circulation Γ/(UD): expected a number, got {g}");
+        }
+        Ok(())
+    }
+
     /// The same configuration without the packing: for building a scene whose particles come from elsewhere
     /// (a checkpoint) or are only counted (a dry run). The packing moves particles inside the tank; it adds
     /// none and removes none, except for the rare particle it moves across the section's edge when a run
@@ -241,7 +295,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let meta = &hull.meta;
     let draft = meta.draft_m / meta.length_m;
     let beam = meta.beam_m / meta.length_m;
-    anyhow::ensure!(cfg.fr > 0.0, "Froude number: expected > 0, got {}", cfg.fr);
+    cfg.check()?;
     anyhow::ensure!(
         cfg.coarse_ratio >= 1.0,
         "coarse ratio: expected ≥ 1, got {}",
