@@ -201,7 +201,7 @@ fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 fn approximated_athena_and_alliance_reproduce_their_particulars() {
     use bowwave::geometry::parametric::{alliance, athena};
     for mut spec in [athena(), alliance()] {
-        spec.calibrate(41, 31);
+        spec.calibrate(41, 31).unwrap();
         let h = spec.offsets(41, 31);
         let text = h.to_csv();
         let h = HullOffsets::parse(&text, &format!("{}.csv", spec.name)).expect("generated file passes the checks");
@@ -221,4 +221,14 @@ fn approximated_athena_and_alliance_reproduce_their_particulars() {
             );
         }
     }
+}
+
+/// Regression (found by feeding `bowwave hull generate` bad numbers): with `--set flare=1e9` the calibration
+/// ended at the edge of its range with Cb 0.029 against the target 0.46, and the hull was written anyway.
+#[test]
+fn calibration_that_cannot_reach_its_target_is_an_error() {
+    let spec = bowwave::geometry::parametric::athena();
+    let mut far = spec.with_overrides(&["flare=1e9".to_string()]).unwrap();
+    let e = format!("{:#}", far.calibrate(11, 9).unwrap_err());
+    assert!(e.contains("calibration") && e.contains("target 0.4600"), "{e}");
 }

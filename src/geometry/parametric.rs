@@ -201,8 +201,10 @@ impl ParametricSpec {
         }
     }
 
-    /// Adjusts `n_mid` by bisection so that Cb of the generated hull matches `target_cb`; returns Cb.
-    pub fn calibrate(&mut self, stations: usize, points: usize) -> f64 {
+    /// Adjusts `n_mid` by bisection so that Cb of the generated hull matches `target_cb`; returns Cb, or an
+    /// error when no n_mid in [1.2, 12] comes within 0.1 % of the target (overrides that leave the family's
+    /// range, e.g. `flare=1e9`, used to be written with Cb 0.03 against 0.46).
+    pub fn calibrate(&mut self, stations: usize, points: usize) -> anyhow::Result<f64> {
         let cb_of = |s: &ParametricSpec| {
             let h = s.offsets(stations, points);
             hydrostatics(&HullSurface::new(&h), 200, 800).0.cb
@@ -217,7 +219,14 @@ impl ParametricSpec {
             }
         }
         self.n_mid = 0.5 * (lo + hi);
-        cb_of(self)
+        let cb = cb_of(self);
+        anyhow::ensure!(
+            (cb - self.target_cb).abs() <= 1e-3 * self.target_cb,
+            "calibration: Cb = {cb:.4} at the end of the midship exponent's range [1.2, 12]; expected the \
+             target {:.4} (the parameters leave the family's range)",
+            self.target_cb
+        );
+        Ok(cb)
     }
 }
 

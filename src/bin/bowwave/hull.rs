@@ -73,6 +73,19 @@ pub enum HullAction {
     },
 }
 
+/// The most stations (and points per station) a generated or imported hull may ask for: the shipped hulls
+/// have 21–41 stations and 31 points, and the spline surface gains nothing from thousands more, while
+/// `--stations 100000000` ran for minutes without a word before it was capped.
+const MAX_STATIONS: usize = 2000;
+
+fn check_count(flag: &str, n: usize, least: usize) -> anyhow::Result<()> {
+    anyhow::ensure!(
+        (least..=MAX_STATIONS).contains(&n),
+        "{flag}: expected {least} to {MAX_STATIONS}, got {n}"
+    );
+    Ok(())
+}
+
 impl HullAction {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
@@ -93,7 +106,7 @@ impl HullAction {
                 transom,
                 out,
             } => {
-                anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");
+                check_count("--stations", stations, 4)?;
                 let xs: Vec<f64> = (0..stations).map(|i| (i as f64 + 0.5) / stations as f64).collect();
                 let opts = bowwave::geometry::stl::ImportOptions {
                     name,
@@ -124,14 +137,15 @@ impl HullAction {
                 if !set.is_empty() {
                     spec = spec.with_overrides(&set)?;
                 }
-                anyhow::ensure!(
-                    stations >= 4 && points >= 3,
-                    "--stations >= 4 and --points >= 3 expected"
-                );
-                let cb = spec.calibrate(stations, points);
+                check_count("--stations", stations, 4)?;
+                check_count("--points", points, 3)?;
+                let cb = spec.calibrate(stations, points)?;
                 let h = spec.offsets(stations, points);
                 let out = out.unwrap_or_else(|| PathBuf::from("hulls").join(format!("{hull}.csv")));
-                bowwave::io::atomic::write_atomic(&out, h.to_csv().as_bytes())?;
+                // What is written must read back: an override such as `flare=1e9` can fold a section.
+                let text = h.to_csv();
+                bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
+                bowwave::io::atomic::write_atomic(&out, text.as_bytes())?;
                 println!(
                     "wrote {} (Cb = {cb:.4}, target {:.4}, n_mid = {:.3})",
                     out.display(),
@@ -147,7 +161,7 @@ impl HullAction {
                 }
             }
             HullAction::Wigley { stations, length, out } => {
-                anyhow::ensure!(stations >= 4, "--stations: expected at least 4, got {stations}");
+                check_count("--stations", stations, 4)?;
                 anyhow::ensure!(
                     length > 0.0 && length.is_finite(),
                     "--length: expected a positive length in metres"
