@@ -70,6 +70,9 @@ pub struct Passage {
     /// Wall and CPU seconds spent in earlier sessions of this run.
     pub wall_before: f64,
     pub cpu_before: f64,
+    /// Wall seconds spent before the passage began (building and packing the scene, settling): left out of
+    /// the pace from which `study --status` estimates the time still needed.
+    pub setup_seconds: f64,
 }
 
 /// The small state, stored as the JSON header.
@@ -96,6 +99,9 @@ struct Header {
     level_set: Option<LevelSetHeader>,
     wall_seconds: f64,
     cpu_seconds: f64,
+    /// Absent (0) in checkpoints written before session 19.
+    #[serde(default)]
+    setup_seconds: f64,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -174,6 +180,7 @@ pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f6
         level_set,
         wall_seconds: wall,
         cpu_seconds: cpu,
+        setup_seconds: p.setup_seconds,
     })?;
     c.write(path)
 }
@@ -194,6 +201,8 @@ pub struct Saved {
     /// Wall and CPU seconds spent on the run so far, over all its sessions.
     pub wall_seconds: f64,
     pub cpu_seconds: f64,
+    /// Of `wall_seconds`, those spent before the passage began (packing, settling); 0 when not recorded.
+    pub setup_seconds: f64,
 }
 
 /// Reads the header of the checkpoint at `path`; errors name the file and what is wrong.
@@ -208,6 +217,7 @@ pub fn peek(path: &Path) -> anyhow::Result<Saved> {
         plunged: h.plunge.is_some(),
         wall_seconds: h.wall_seconds,
         cpu_seconds: h.cpu_seconds,
+        setup_seconds: h.setup_seconds,
     })
 }
 
@@ -311,5 +321,6 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
         bow,
         wall_before: h.wall_seconds,
         cpu_before: h.cpu_seconds,
+        setup_seconds: h.setup_seconds,
     })
 }

@@ -488,6 +488,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
 
 /// A new run: builds the scene, lets it settle (1.) and sets up the passage loop.
 fn start(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, checkpoint::Passage, String)> {
+    let clock = Instant::now();
     let mut scene = build(hull.clone(), cfg)?;
     let fingerprint = checkpoint::fingerprint(cfg, &scene);
     let g = scene.geom.clone();
@@ -530,6 +531,7 @@ fn start(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, c
         bow: None,
         wall_before: 0.0,
         cpu_before: 0.0,
+        setup_seconds: clock.elapsed().as_secs_f64(),
     };
     Ok((scene, p, fingerprint))
 }
@@ -577,16 +579,13 @@ fn scene_to_restore_into(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::
 pub struct Progress {
     /// x/L of the section at the checkpoint.
     pub x_over_l: f64,
-    /// x/L where the run starts (the stem side of the passage) and where it will stop.
+    /// x/L where the run starts (the stem side of the passage).
     pub x_start: f64,
-    pub x_stop: f64,
-    pub steps: u64,
-    pub plunged: bool,
-    pub wall_seconds: f64,
-    pub cpu_seconds: f64,
     /// The checkpoint belongs to `cfg`: running the case goes on from it. When false, a run of `cfg`
     /// starts afresh and overwrites it.
     pub same_configuration: bool,
+    /// What the checkpoint's header says (steps, stop point, plunge found, seconds spent).
+    pub saved: checkpoint::Saved,
 }
 
 /// The progress of the run of `cfg` whose checkpoint is in `dir`, or `None` when there is no checkpoint. Builds
@@ -602,12 +601,8 @@ pub fn progress(hull: &Arc<HullSurface>, cfg: &TwoDtConfig, dir: &Path) -> anyho
     Ok(Some(Progress {
         x_over_l: scene.profile.x_at(saved.time),
         x_start: scene.geom.x0,
-        x_stop: saved.x_stop,
-        steps: saved.steps,
-        plunged: saved.plunged,
-        wall_seconds: saved.wall_seconds,
-        cpu_seconds: saved.cpu_seconds,
         same_configuration: saved.fingerprint == fingerprint,
+        saved,
     }))
 }
 

@@ -136,14 +136,17 @@ fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> an
                 )
             }
             CaseState::InProgress(p) => {
+                let s = &p.saved;
+                let pace = if s.setup_seconds > 0.0 {
+                    format!(
+                        "the pace of its passage so far ({:.2} h of packing and settling before it)",
+                        s.setup_seconds / 3600.0
+                    )
+                } else {
+                    "its pace so far (packing included: an older checkpoint)".to_string()
+                };
                 let left = studies::status::remaining_seconds(p)
-                    .map(|s| {
-                        format!(
-                            ", about {:.1} h more to x/L {:.3} at its pace so far",
-                            s / 3600.0,
-                            p.x_stop
-                        )
-                    })
+                    .map(|left| format!(", about {:.1} h more to x/L {:.3} at {pace}", left / 3600.0, s.x_stop))
                     .unwrap_or_default();
                 format!(
                     "{}: checkpoint at x/L {:.4} (from {:.3}), {} steps, {:.2} h wall{}{}",
@@ -154,9 +157,9 @@ fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> an
                     },
                     p.x_over_l,
                     p.x_start,
-                    p.steps,
-                    p.wall_seconds / 3600.0,
-                    if p.plunged { ", plunge found" } else { "" },
+                    s.steps,
+                    s.wall_seconds / 3600.0,
+                    if s.plunged { ", plunge found" } else { "" },
                     if p.same_configuration { left } else { String::new() },
                 )
             }
