@@ -224,7 +224,7 @@ proptest! {
     }
 
     /// A damaged hull file reads as a hull or as an error naming the file; a hull that reads gives its
-    /// sections without a panic.
+    /// sections, and a coarse 2D+t scene that takes a few steps, without a panic.
     #[test]
     fn damaged_hull_files_give_errors_not_panics(
         which in 0..3usize,
@@ -236,11 +236,28 @@ proptest! {
         match no_panic("HullOffsets::parse", &text, || HullOffsets::parse(&text, "damaged.csv"))? {
             Err(e) => prop_assert!(e.to_string().contains("damaged.csv"), "error without the file's name: {e}"),
             Ok(h) => {
-                no_panic("HullSurface sections", &text, || {
-                    let s = HullSurface::new(&h);
+                no_panic("HullSurface sections and a coarse 2D+t scene", &text, || {
+                    let s = std::sync::Arc::new(HullSurface::new(&h));
                     let (a, b) = s.x_range;
                     for k in 0..=10 {
                         let _ = s.section(a + (b - a) * k as f64 / 10.0, 1e-3);
+                    }
+                    // The hull's section in a coarse scene, starting mid-hull, for a few steps: an error
+                    // (a section the scene cannot use, a run that stops) is allowed, a panic is not.
+                    let draft = h.meta.draft_m / h.meta.length_m;
+                    let cfg = bowwave::twodt::scene::TwoDtConfig {
+                        dx: Some(draft / 5.0),
+                        x0: Some(0.5 * (a + b)),
+                        settle_crossings: 0.0,
+                        packing: Some(false),
+                        ..Default::default()
+                    };
+                    if let Ok(mut scene) = bowwave::twodt::scene::build(s, &cfg) {
+                        for _ in 0..3 {
+                            if scene.sim.step().is_err() {
+                                break;
+                            }
+                        }
                     }
                 })?;
             }
