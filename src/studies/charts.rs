@@ -60,11 +60,10 @@ pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
             match k {
                 "alpha" => n.viscosity = Viscosity::Artificial { alpha: x },
                 "delta" => n.delta = x,
-                "cfl" => n.cfl = Some(x),
-                "h" if x > 0.0 => n.h_over_dx = Some(x),
-                _ => anyhow::bail!(
-                    "variant `{other}`: expected alpha=A, delta=D, cfl=C or h=H (H > 0); `{k}` is none of these"
-                ),
+                "cfl" if x > 0.0 => n.cfl = Some(x),
+                // The case file's range for h/dx (a support of 100 spacings would run for days).
+                "h" if (0.5..=4.0).contains(&x) => n.h_over_dx = Some(x),
+                _ => anyhow::bail!("variant `{other}`: expected alpha=A, delta=D, cfl=C (C > 0) or h=H (0.5 ≤ H ≤ 4)"),
             }
         }
     }
@@ -442,7 +441,8 @@ mod tests {
         assert!(c.walls.iter().all(|w| w.ghosts == GhostKind::Images));
         apply_variant(&mut c, "fixed-ghosts").unwrap();
         assert!(c.walls.iter().all(|w| w.ghosts == GhostKind::Fixed));
-        for bad in ["h=0", "h=-1", "cfl=x", "speed=2", "gauss"] {
+        // h=100 and cfl=0 were accepted (a support of 300 spacings; a zero time step).
+        for bad in ["h=0", "h=-1", "h=100", "cfl=0", "cfl=x", "speed=2", "gauss"] {
             let e = apply_variant(&mut c, bad).unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains("expected"), "{e}");
         }

@@ -29,10 +29,14 @@ impl BenchArgs {
 
 #[derive(Args)]
 pub struct BenchOneArgs {
+    /// Resolution of the dam break, H/dx.
     #[arg(long)]
     pub res: f64,
+    /// End time in units of √(H/g) (t√(g/H)).
     #[arg(long)]
     pub end: f64,
+    /// Method variant, as in `bench --variants`: delta-sph, molteni, wcsph, wendland, pc, rk4, table,
+    /// exact-kernel, images, fixed-ghosts, or alpha=A, delta=D, cfl=C, h=H.
     #[arg(long, default_value = "delta-sph")]
     pub variant: String,
 }

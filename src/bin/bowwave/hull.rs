@@ -39,8 +39,10 @@ pub enum HullAction {
     Generate {
         /// athena or alliance.
         hull: String,
+        /// Number of stations, stem and stern included (4 to 2000; the shipped files have 41).
         #[arg(long, default_value_t = 41)]
         stations: usize,
+        /// Points per station, keel to deck (3 to 2000).
         #[arg(long, default_value_t = 31)]
         points: usize,
         /// Output file (default hulls/NAME.csv).
