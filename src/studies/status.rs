@@ -61,9 +61,9 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
         .collect()
 }
 
-/// Wall seconds still needed to reach the run's stop point at the pace the passage has kept so far (the
-/// packing and settling before it left out when the checkpoint records them, so that a run of 665 000
-/// particles, half an hour of packing, is not estimated at 3 times its length early on); `None` before the
+/// Wall seconds still needed to reach the run's stop point at the pace the passage has kept so far, the
+/// packing and settling before it left out when the checkpoint records them (early in a run of 665 000
+/// particles the packing counted as progress made the estimate about 3 times too long); `None` before the
 /// section has moved.
 pub fn remaining_seconds(p: &Progress) -> Option<f64> {
     let done = p.x_over_l - p.x_start;
