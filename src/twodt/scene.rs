@@ -8,7 +8,7 @@ use crate::geometry::surface::HullSurface;
 use crate::sph::body_force::BodyForce;
 use crate::sph::boundary::{Boundary, RigidMotion};
 use crate::sph::deforming_wall::DeformingWall;
-use crate::sph::particles::Fluid;
+use crate::sph::particles::{Fluid, MAX_PARTICLES};
 use crate::sph::polyline_wall::{solid_side, FluidSide, PolylineWall};
 use crate::sph::solver::{Simulation, SolverConfig};
 use nalgebra::Vector2;
@@ -107,14 +107,30 @@ pub struct TwoDtConfig {
 }
 
 impl TwoDtConfig {
-    /// Checks the values that [`build`] does not check against the hull (the spacing and the domain are
-    /// checked there): each error names the option and what was expected. Found by feeding `bowwave twodt`
-    /// bad numbers: a negative c0, settling or output spacing, or a detection interval of 0, ran on (an
-    /// output spacing of 0 writes at every step). Study files check their own fields when read.
+    /// Checks the values that need no hull (the spacing and the tank's size are checked by [`build`],
+    /// against the hull's draft and beam): each error names the option and what was expected. Found by
+    /// feeding `bowwave twodt` bad numbers: a negative c0, settling or output spacing, or a detection
+    /// interval of 0, ran on (an output spacing of 0 writes at every step). Study files check their own
+    /// fields when read.
     pub fn check(&self) -> anyhow::Result<()> {
         let positive = |v: f64| v.is_finite() && v > 0.0;
         let non_negative = |v: f64| v.is_finite() && v >= 0.0;
         anyhow::ensure!(positive(self.fr), "Froude number: expected > 0, got {}", self.fr);
+        anyhow::ensure!(
+            self.coarse_ratio >= 1.0,
+            "coarse ratio: expected ≥ 1, got {}",
+            self.coarse_ratio
+        );
+        anyhow::ensure!(
+            self.width_over_beam >= 1.0 && self.width_over_beam.is_finite(),
+            "domain width W/B: expected ≥ 1, got {}",
+            self.width_over_beam
+        );
+        anyhow::ensure!(
+            self.depth_over_draft > 1.0 && self.depth_over_draft.is_finite(),
+            "water depth Z/D: expected > 1, got {}",
+            self.depth_over_draft
+        );
         if let Some(c0) = self.c0 {
             anyhow::ensure!(positive(c0), "c0/√(gL): expected > 0, got {c0}");
         }
@@ -296,21 +312,6 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let draft = meta.draft_m / meta.length_m;
     let beam = meta.beam_m / meta.length_m;
     cfg.check()?;
-    anyhow::ensure!(
-        cfg.coarse_ratio >= 1.0,
-        "coarse ratio: expected ≥ 1, got {}",
-        cfg.coarse_ratio
-    );
-    anyhow::ensure!(
-        cfg.width_over_beam >= 1.0 && cfg.width_over_beam.is_finite(),
-        "domain width W/B: expected ≥ 1, got {}",
-        cfg.width_over_beam
-    );
-    anyhow::ensure!(
-        cfg.depth_over_draft > 1.0 && cfg.depth_over_draft.is_finite(),
-        "water depth Z/D: expected > 1, got {}",
-        cfg.depth_over_draft
-    );
     let dx_f = cfg.dx.unwrap_or_else(|| auto_dx(cfg.fr, draft));
     anyhow::ensure!(
         dx_f > 0.0 && dx_f < draft / 4.0,
@@ -323,12 +324,12 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     // At most the whole tank at the fine spacing: a bound on what the graded rows will hold.
     let bound = width * depth / (dx_f * dx_f);
     anyhow::ensure!(
-        bound <= crate::sph::particles::MAX_PARTICLES,
+        bound <= MAX_PARTICLES,
         "dx/L = {dx_f:e} in a tank {:.3} L wide and {:.3} L deep: up to {bound:.3e} particles, expected at most {:e} \
          (a larger dx/L, or a smaller W/B or Z/D)",
         width,
         depth,
-        crate::sph::particles::MAX_PARTICLES
+        MAX_PARTICLES
     );
     let x0 = cfg.x0.unwrap_or(hull.x_range.0);
     let x_end = match cfg.until {
