@@ -159,30 +159,20 @@ pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>
         .collect()
 }
 
-/// Whether a case can be built at spacing `dx` (kernel support `support`): `dx` positive and finite, every
-/// rectangular block at least one spacing across, and the particles and the cells of the domain within
-/// [`MAX_PARTICLES`]. The error names the case, the field and what was expected.
-pub fn check_size(case: &CaseFile, dx: f64, support: f64) -> anyhow::Result<()> {
-    let name = &case.name;
-    anyhow::ensure!(
-        dx.is_finite() && dx > 0.0,
-        "case `{name}`: resolution: expected a positive number of particles per reference length (dx = {dx} m)"
-    );
-    let mut fluid = 0.0;
-    for (k, b) in case.blocks.iter().enumerate() {
-        match b {
+/// About how many fluid particles and wall ghosts a case holds at spacing `dx` (kernel support `support`):
+/// the blocks' lattice counts and, per wall segment, its length in spacings (plus the ends) times the ghost
+/// layers. An estimate made before anything is allocated.
+pub fn estimated_particles(case: &CaseFile, dx: f64, support: f64) -> f64 {
+    let fluid: f64 = case
+        .blocks
+        .iter()
+        .map(|b| match b {
             BlockSpec::Rectangle { min, max, .. } => {
-                let (nx, ny) = (((max[0] - min[0]) / dx).round(), ((max[1] - min[1]) / dx).round());
-                anyhow::ensure!(
-                    nx >= 1.0 && ny >= 1.0,
-                    "case `{name}`: blocks[{k}]: expected at least one spacing across, but dx = {dx:e} m at this \
-                     resolution: raise `scales.resolution` (or --res)"
-                );
-                fluid += nx * ny;
+                ((max[0] - min[0]) / dx).round() * ((max[1] - min[1]) / dx).round()
             }
-            BlockSpec::Disc { radius, .. } => fluid += std::f64::consts::PI * (radius / dx).powi(2) + 3.0,
-        }
-    }
+            BlockSpec::Disc { radius, .. } => std::f64::consts::PI * (radius / dx).powi(2) + 3.0,
+        })
+        .sum();
     let layers = (support / dx).ceil() + 1.0;
     let ghosts: f64 = case
         .walls
@@ -190,12 +180,36 @@ pub fn check_size(case: &CaseFile, dx: f64, support: f64) -> anyhow::Result<()> 
         .flat_map(|w| w.points.windows(2))
         .map(|p| ((p[1][0] - p[0][0]).hypot(p[1][1] - p[0][1]) / dx + 2.0 * layers) * layers)
         .sum();
+    fluid + ghosts
+}
+
+/// Whether a case can be built at spacing `dx` (kernel support `support`): `dx` positive and finite, every
+/// rectangular block at least one spacing across, and the particles ([`estimated_particles`]) and the cells
+/// of the domain within [`MAX_PARTICLES`]. The error names the case, the field and what was expected.
+pub fn check_size(case: &CaseFile, dx: f64, support: f64) -> anyhow::Result<()> {
+    let name = &case.name;
+    anyhow::ensure!(
+        dx.is_finite() && dx > 0.0,
+        "case `{name}`: resolution: expected a positive number of particles per reference length (dx = {dx} m)"
+    );
+    for (k, b) in case.blocks.iter().enumerate() {
+        if let BlockSpec::Rectangle { min, max, .. } = b {
+            anyhow::ensure!(
+                ((max[0] - min[0]) / dx).round() >= 1.0 && ((max[1] - min[1]) / dx).round() >= 1.0,
+                "case `{name}`: blocks[{k}]: expected at least one spacing across, but dx = {dx:e} m at this \
+                 resolution: raise `scales.resolution` (or --res)"
+            );
+        }
+    }
     let (lo, hi) = (&case.domain.min, &case.domain.max);
     let cells: f64 = (0..2)
         .map(|i| (hi[i] - lo[i] + 2.0 * support) / support + 1.0)
         .product();
     for (what, n) in [
-        ("particles (fluid and wall ghosts)", fluid + ghosts),
+        (
+            "particles (fluid and wall ghosts)",
+            estimated_particles(case, dx, support),
+        ),
         ("neighbour-search cells over the domain", cells),
     ] {
         anyhow::ensure!(
