@@ -88,6 +88,16 @@ fn check_count(flag: &str, n: usize, least: usize) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Writes a hull file atomically after reading its text back through the file's own checks, so that nothing
+/// is written that `hull check` or a run would refuse (an import at a wrong `--length`, or a generator
+/// override such as `flare=1e9` that folds a section).
+fn write_checked(out: &std::path::Path, h: &bowwave::geometry::hull_file::HullOffsets) -> anyhow::Result<()> {
+    let text = h.to_csv();
+    bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
+    bowwave::io::atomic::write_atomic(out, text.as_bytes())?;
+    Ok(())
+}
+
 impl HullAction {
     pub fn run(self) -> anyhow::Result<()> {
         match self {
@@ -118,9 +128,7 @@ impl HullAction {
                     transom,
                 };
                 let h = bowwave::geometry::stl::import_stl(&stl, &opts)?;
-                let text = h.to_csv();
-                bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
-                bowwave::io::atomic::write_atomic(&out, text.as_bytes())?;
+                write_checked(&out, &h)?;
                 println!("wrote {} ({} stations)", out.display(), h.stations.len());
             }
             HullAction::Generate {
@@ -144,10 +152,7 @@ impl HullAction {
                 let cb = spec.calibrate(stations, points)?;
                 let h = spec.offsets(stations, points);
                 let out = out.unwrap_or_else(|| PathBuf::from("hulls").join(format!("{hull}.csv")));
-                // What is written must read back: an override such as `flare=1e9` can fold a section.
-                let text = h.to_csv();
-                bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
-                bowwave::io::atomic::write_atomic(&out, text.as_bytes())?;
+                write_checked(&out, &h)?;
                 println!(
                     "wrote {} (Cb = {cb:.4}, target {:.4}, n_mid = {:.3})",
                     out.display(),
