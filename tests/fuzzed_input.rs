@@ -10,6 +10,27 @@ use proptest::prelude::*;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 
+/// A scratch directory for one damaged file, removed when the case is over (pass or fail), so that a run of
+/// hundreds of cases leaves nothing behind in the system's temporary directory.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    /// `<tmp>/bowwave-fuzz-<kind>-<pid>-<n>`, unique per case even with the tests on several threads.
+    fn new(kind: &str) -> Scratch {
+        static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let dir = std::env::temp_dir().join(format!("bowwave-fuzz-{kind}-{}-{n}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch(dir)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
 /// Values a damaged number may become: wrong sign, zero, overflow, not finite, another type, empty.
 const BAD_VALUES: &[&str] = &[
     "0",
@@ -255,14 +276,12 @@ proptest! {
         let name = ["quick", "athena", "athena-trend", "athena-fr0.5-thesis-spacings", "alliance", "wigley"][which];
         let original = std::fs::read_to_string(project(&format!("studies/{name}.toml"))).unwrap();
         let text = apply(&original, &edits);
-        let dir = std::env::temp_dir().join(format!("bowwave-fuzz-study-{}", std::process::id()));
+        let scratch = Scratch::new("study");
+        let dir = &scratch.0;
         std::fs::create_dir_all(dir.join("studies")).unwrap();
         std::fs::create_dir_all(dir.join("hulls")).unwrap();
         for hull in ["athena", "wigley", "alliance"] {
-            let to = dir.join(format!("hulls/{hull}.csv"));
-            if !to.exists() {
-                std::fs::copy(project(&format!("hulls/{hull}.csv")), to).unwrap();
-            }
+            std::fs::copy(project(&format!("hulls/{hull}.csv")), dir.join(format!("hulls/{hull}.csv"))).unwrap();
         }
         let path = dir.join("studies/damaged.toml");
         std::fs::write(&path, &text).unwrap();
@@ -301,8 +320,8 @@ proptest! {
         cut in any::<usize>(),
     ) {
         use bowwave::io::checkpoint::Checkpoint;
-        let dir = std::env::temp_dir().join(format!("bowwave-fuzz-ckpt-{}", std::process::id()));
-        let path = dir.join("damaged.bin");
+        let scratch = Scratch::new("ckpt");
+        let path = scratch.0.join("damaged.bin");
         let mut c = Checkpoint { header: serde_json::json!({"time": 0.25, "steps": 12}), ..Default::default() };
         c.arrays.insert("pos_y".into(), vec![0.1, 0.2, 0.3]);
         c.arrays.insert("rho".into(), vec![1000.0; 3]);
@@ -322,4 +341,17 @@ proptest! {
             prop_assert!(format!("{e:#}").contains("damaged.bin"), "{e:#}");
         }
     }
+}
+
+/// Regression: the property tests left one `bowwave-fuzz-*-<pid>` folder per run in the temporary directory
+/// (50 of them after a few sessions). A case's scratch folder is now gone once the case is over.
+#[test]
+fn fuzz_scratch_folders_are_removed_after_each_case() {
+    let path = {
+        let scratch = Scratch::new("leak-check");
+        std::fs::write(scratch.0.join("damaged.toml"), "x = 1").unwrap();
+        assert!(scratch.0.join("damaged.toml").exists());
+        scratch.0.clone()
+    };
+    assert!(!path.exists(), "{} was left behind", path.display());
 }
