@@ -93,6 +93,27 @@ fn bad_study_files_name_the_file_and_the_field() {
         "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[model]\nratio = 0.5\n",
     );
     assert!(e.contains("model.ratio"), "{e}");
+    // The values are checked by the 2D+t configuration's own rules, told with the study's field names.
+    let e = error_of(&dir, "froude = [0.5, 5.0]\n[resolution]\nlevel = \"coarse\"\n");
+    assert!(
+        e.contains("`froude`") && e.contains("(0, 3)") && e.contains("got 5"),
+        "{e}"
+    );
+    let e = error_of(
+        &dir,
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = -0.2\n",
+    );
+    assert!(e.contains("stop.until") && e.contains("got -0.2"), "{e}");
+    let e = error_of(
+        &dir,
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = \"transom\"\ngive_up_at = -1.0\n",
+    );
+    assert!(e.contains("stop.give_up_at"), "{e}");
+    let e = error_of(
+        &dir,
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[outputs]\noutput_dx = 0.0\n",
+    );
+    assert!(e.contains("outputs.output_dx") && e.contains("> 0"), "{e}");
 }
 
 /// Two short, very coarse cases (to x/L = 0.04) run, are found finished on a re-run (nothing runs again),

@@ -4,7 +4,7 @@
 //! `docs/studies.md`.
 
 use crate::input_error::{parse_toml, read_text, InputError};
-use crate::twodt::scene::{auto_dx, estimated_hpj_over_d, TwoDtConfig, Until};
+use crate::twodt::scene::{auto_dx, estimated_hpj_over_d, ConfigOption, TwoDtConfig, Until};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -241,7 +241,7 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
     if s.name.is_empty() || s.name.contains(['/', '\\']) {
         return err("name", "a non-empty name without path separators");
     }
-    if s.froude.is_empty() || s.froude.iter().any(|f| !(f.is_finite() && *f > 0.0 && *f < 3.0)) {
+    if s.froude.is_empty() {
         return err("froude", "a non-empty list of Froude numbers in (0, 3)");
     }
     let r = &s.resolution;
@@ -283,40 +283,14 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             .collect()
     };
     let m = &s.model;
-    if !(m.ratio >= 1.0 && m.ratio <= 4.0) {
-        return err("model.ratio", "a coarse/fine spacing ratio in [1, 4]");
-    }
-    if !(m.width_over_beam >= 1.0 && m.width_over_beam.is_finite()) {
-        return err("model.width_over_beam", "W/B ≥ 1");
-    }
-    if !(m.depth_over_draft > 1.0 && m.depth_over_draft.is_finite()) {
-        return err("model.depth_over_draft", "Z/D > 1");
-    }
-    if m.c0.is_some_and(|c| !(c.is_finite() && c > 0.0)) {
-        return err("model.c0", "a positive c0/√(gL)");
-    }
-    if !(m.settle >= 0.0 && m.settle.is_finite()) {
-        return err("model.settle", "a number of acoustic crossings ≥ 0");
-    }
-    if m.detect_every == 0 {
-        return err("model.detect_every", "a number of steps ≥ 1");
-    }
     let until = match &s.stop.until {
         toml::Value::String(v) if v == "plunge" || v == "transom" => v.clone(),
-        toml::Value::Float(x) if x.is_finite() && *x > 0.0 => x.to_string(),
-        toml::Value::Integer(x) if *x > 0 => x.to_string(),
+        toml::Value::Float(x) => x.to_string(),
+        toml::Value::Integer(x) => x.to_string(),
         _ => return err("stop.until", "\"plunge\", \"transom\" or an x/L value > 0"),
     };
-    if !(s.stop.give_up_at > 0.0 && s.stop.give_up_at.is_finite()) {
-        return err("stop.give_up_at", "an x/L value > 0");
-    }
-    if !(s.stop.after_plunge >= 0.0 && s.stop.after_plunge.is_finite()) {
-        return err("stop.after_plunge", "an x/L distance ≥ 0");
-    }
-    if !(s.outputs.output_dx > 0.0 && s.outputs.output_dx.is_finite()) {
-        return err("outputs.output_dx", "an x/L distance > 0");
-    }
-    Ok(s.froude
+    let cases: Vec<CaseSpec> = s
+        .froude
         .iter()
         .zip(dxs)
         .enumerate()
@@ -337,5 +311,42 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             frames: s.outputs.frames,
             output_dx: s.outputs.output_dx,
         })
-        .collect())
+        .collect();
+    // The values themselves are checked by the 2D+t run's own rules (one list, `TwoDtConfig::check`), with
+    // the give-up point checked whatever `until` says, and each error is told with the study's field name.
+    for case in &cases {
+        let cfg = TwoDtConfig {
+            give_up_at: Some(case.give_up_at),
+            ..case.config()
+        };
+        cfg.check().map_err(|e| {
+            (
+                study_field(e.option).to_string(),
+                format!("{}, got {}", e.expected, e.got),
+            )
+        })?;
+    }
+    Ok(cases)
+}
+
+/// The study file's field for an option of the 2D+t configuration.
+fn study_field(option: ConfigOption) -> &'static str {
+    match option {
+        ConfigOption::Fr => "froude",
+        ConfigOption::CoarseRatio => "model.ratio",
+        ConfigOption::WidthOverBeam => "model.width_over_beam",
+        ConfigOption::DepthOverDraft => "model.depth_over_draft",
+        ConfigOption::C0 => "model.c0",
+        ConfigOption::Settle => "model.settle",
+        ConfigOption::DetectEvery => "model.detect_every",
+        ConfigOption::Until => "stop.until",
+        ConfigOption::GiveUpAt => "stop.give_up_at",
+        ConfigOption::AfterPlunge => "stop.after_plunge",
+        ConfigOption::OutputDx => "outputs.output_dx",
+        // Options a study file does not set; their defaults pass.
+        o
+        @ (ConfigOption::Cfl | ConfigOption::Layers | ConfigOption::PlungeDepth | ConfigOption::PlungeCirculation) => {
+            o.describe()
+        }
+    }
 }

@@ -106,73 +106,122 @@ pub struct TwoDtConfig {
     pub packing: Option<bool>,
 }
 
+/// The options of [`TwoDtConfig`] that [`TwoDtConfig::check`] checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ConfigOption {
+    Fr,
+    CoarseRatio,
+    WidthOverBeam,
+    DepthOverDraft,
+    C0,
+    Cfl,
+    Settle,
+    OutputDx,
+    AfterPlunge,
+    DetectEvery,
+    Until,
+    Layers,
+    GiveUpAt,
+    PlungeDepth,
+    PlungeCirculation,
+}
+
+impl ConfigOption {
+    /// What the option is, in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            ConfigOption::Fr => "Froude number",
+            ConfigOption::CoarseRatio => "coarse ratio dx_c/dx_f",
+            ConfigOption::WidthOverBeam => "domain width W/B",
+            ConfigOption::DepthOverDraft => "water depth Z/D",
+            ConfigOption::C0 => "c0/√(gL)",
+            ConfigOption::Cfl => "CFL",
+            ConfigOption::Settle => "settling",
+            ConfigOption::OutputDx => "output spacing x/L",
+            ConfigOption::AfterPlunge => "run-on after the plunge x/L",
+            ConfigOption::DetectEvery => "detection interval",
+            ConfigOption::Until => "end point x/L",
+            ConfigOption::Layers => "fine layer depth and coarse layer height / D",
+            ConfigOption::GiveUpAt => "give-up point x/L",
+            ConfigOption::PlungeDepth => "plunge depth",
+            ConfigOption::PlungeCirculation => "plunge circulation Γ/(UD)",
+        }
+    }
+}
+
+/// A [`TwoDtConfig`] value out of range: which option, what was expected, what was given.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{}: expected {expected}, got {got}", option.describe())]
+pub struct ConfigError {
+    pub option: ConfigOption,
+    pub expected: &'static str,
+    pub got: String,
+}
+
 impl TwoDtConfig {
     /// Checks the values that need no hull (the spacing and the tank's size are checked by [`build`],
     /// against the hull's draft and beam): each error names the option and what was expected. Found by
     /// feeding `bowwave twodt` bad numbers: a negative c0, settling or output spacing, or a detection
-    /// interval of 0, ran on (an output spacing of 0 writes at every step). Study files check their own
-    /// fields when read.
-    pub fn check(&self) -> anyhow::Result<()> {
+    /// interval of 0, ran on (an output spacing of 0 writes at every step). A study file's cases are checked
+    /// here too, the error's [`ConfigOption`] mapped to the study's field, so the two cannot disagree.
+    pub fn check(&self) -> Result<(), ConfigError> {
+        use ConfigOption as O;
         let positive = |v: f64| v.is_finite() && v > 0.0;
         let non_negative = |v: f64| v.is_finite() && v >= 0.0;
-        anyhow::ensure!(positive(self.fr), "Froude number: expected > 0, got {}", self.fr);
-        anyhow::ensure!(
-            self.coarse_ratio >= 1.0,
-            "coarse ratio: expected ≥ 1, got {}",
-            self.coarse_ratio
-        );
-        anyhow::ensure!(
-            self.width_over_beam >= 1.0 && self.width_over_beam.is_finite(),
-            "domain width W/B: expected ≥ 1, got {}",
-            self.width_over_beam
-        );
-        anyhow::ensure!(
-            self.depth_over_draft > 1.0 && self.depth_over_draft.is_finite(),
-            "water depth Z/D: expected > 1, got {}",
-            self.depth_over_draft
-        );
-        if let Some(c0) = self.c0 {
-            anyhow::ensure!(positive(c0), "c0/√(gL): expected > 0, got {c0}");
+        let fail = |option, expected, got: &dyn std::fmt::Display| {
+            Err(ConfigError {
+                option,
+                expected,
+                got: got.to_string(),
+            })
+        };
+        if !(positive(self.fr) && self.fr < 3.0) {
+            return fail(O::Fr, "in (0, 3)", &self.fr);
         }
-        if let Some(cfl) = self.cfl {
-            anyhow::ensure!(positive(cfl), "CFL: expected > 0, got {cfl}");
+        if !(self.coarse_ratio >= 1.0 && self.coarse_ratio <= 4.0) {
+            return fail(O::CoarseRatio, "in [1, 4]", &self.coarse_ratio);
         }
-        anyhow::ensure!(
-            non_negative(self.settle_crossings),
-            "settling: expected 0 or more acoustic crossings, got {}",
-            self.settle_crossings
-        );
-        anyhow::ensure!(
-            positive(self.output_dx),
-            "output spacing x/L: expected > 0, got {}",
-            self.output_dx
-        );
-        anyhow::ensure!(
-            non_negative(self.after_plunge),
-            "run-on after the plunge x/L: expected 0 or more, got {}",
-            self.after_plunge
-        );
-        anyhow::ensure!(
-            self.detect_every >= 1,
-            "detection interval: expected at least 1 step, got 0"
-        );
-        anyhow::ensure!(
-            positive(self.fine_depth_over_draft) && positive(self.coarse_height_over_draft),
-            "fine layer depth and coarse layer height / D: expected > 0, got {} and {}",
-            self.fine_depth_over_draft,
-            self.coarse_height_over_draft
-        );
-        if let Some(x) = self.give_up_at {
-            anyhow::ensure!(x.is_finite(), "give-up point x/L: expected a number, got {x}");
+        if !(self.width_over_beam >= 1.0 && self.width_over_beam.is_finite()) {
+            return fail(O::WidthOverBeam, "≥ 1", &self.width_over_beam);
         }
-        if let Some(d) = self.plunge_depth {
-            anyhow::ensure!(
-                d.is_finite() && d > 0.0 && d <= 1.0,
-                "plunge depth: expected in (0, 1], got {d}"
-            );
+        if !(self.depth_over_draft > 1.0 && self.depth_over_draft.is_finite()) {
+            return fail(O::DepthOverDraft, "> 1", &self.depth_over_draft);
         }
-        if let Some(g) = self.plunge_circulation {
-            anyhow::ensure!(g.is_finite(), "plunge circulation Γ/(UD): expected a number, got {g}");
+        if let Some(c0) = self.c0.filter(|&c| !positive(c)) {
+            return fail(O::C0, "> 0", &c0);
+        }
+        if let Some(cfl) = self.cfl.filter(|&c| !positive(c)) {
+            return fail(O::Cfl, "> 0", &cfl);
+        }
+        if !non_negative(self.settle_crossings) {
+            return fail(O::Settle, "0 or more acoustic crossings", &self.settle_crossings);
+        }
+        if !positive(self.output_dx) {
+            return fail(O::OutputDx, "> 0", &self.output_dx);
+        }
+        if !non_negative(self.after_plunge) {
+            return fail(O::AfterPlunge, "0 or more", &self.after_plunge);
+        }
+        if self.detect_every == 0 {
+            return fail(O::DetectEvery, "at least 1 step", &0);
+        }
+        if !(positive(self.fine_depth_over_draft) && positive(self.coarse_height_over_draft)) {
+            let got = format!("{} and {}", self.fine_depth_over_draft, self.coarse_height_over_draft);
+            return fail(O::Layers, "> 0", &got);
+        }
+        if let Until::X(x) = self.until {
+            if !positive(x) {
+                return fail(O::Until, "`plunge`, `transom` or an x/L value > 0", &x);
+            }
+        }
+        if let Some(x) = self.give_up_at.filter(|&x| !positive(x)) {
+            return fail(O::GiveUpAt, "an x/L value > 0", &x);
+        }
+        if let Some(d) = self.plunge_depth.filter(|&d| !(d.is_finite() && d > 0.0 && d <= 1.0)) {
+            return fail(O::PlungeDepth, "in (0, 1]", &d);
+        }
+        if let Some(g) = self.plunge_circulation.filter(|g| !g.is_finite()) {
+            return fail(O::PlungeCirculation, "a number", &g);
         }
         Ok(())
     }

@@ -47,7 +47,7 @@ pub struct TwodtArgs {
     /// bow-wave height estimated from Table 10.1 of the thesis).
     #[arg(long)]
     pub dx: Option<f64>,
-    /// Coarse spacing below the transition, as a multiple of dx (constant h; 1 = uniform). Default 1.5,
+    /// Coarse spacing below the transition, as a multiple of dx, in [1, 4] (constant h; 1 = uniform). Default 1.5,
     /// packed: 42 % fewer particles for the same crest within 0.5 % (docs/twodt.md).
     #[arg(long, default_value_t = 1.5)]
     pub ratio: f64,
