@@ -6,7 +6,7 @@
 //! * [`input_error`]: errors in user files, naming the file, the field and what was expected.
 //! * [`validation`]: comparisons with analytic solutions and published data.
 //! * [`io`]: writers, one file per format (CSV, VTK, PNG plots), and atomic writes.
-//! * [`bench`]: throughput measurement.
+//! * [`mod@bench`]: throughput measurement.
 
 pub mod analysis;
 pub mod bench;

@@ -1,7 +1,7 @@
 //! Solid boundaries as *fixed ghost particles* (thesis §7.1.1): the boundary supplies, at time t, the ghost
 //! positions, their interpolation (mirror) points inside the fluid and the wall velocity and acceleration
 //! there. The solver fills in the ghosts' velocity, pressure and density from the fluid by MLS
-//! ([`crate::sph::mirror`]). This file knows nothing of hulls or file formats.
+//! ([`crate::sph::mls`], `crate::sph::equations::ghost_conditions`). This file knows nothing of hulls or file formats.
 
 use nalgebra::SVector;
 

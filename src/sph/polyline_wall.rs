@@ -353,7 +353,7 @@ pub fn ghost_layers(points: &[V2], side: FluidSide, ds: f64, support: f64) -> Gh
 /// The ghost layers of a polyline whose vertices move with `motion` (a deforming wall, thesis §7.1.1:
 /// "the generation of the fixed ghost particles is repeated at each time step"). Ghosts whose foot is a
 /// corner vertex (turn above 30°) mirror through that point (Fig. 7.3); all others through the wall.
-/// `anchor_start`: sample from the first point (see [`sample_offset`]), for a wall that continues another.
+/// `anchor_start`: sample from the first point (see `sample_offset`), for a wall that continues another.
 pub fn ghost_layers_moving(
     points: &[V2],
     motion: Option<&VertexMotion>,
