@@ -145,8 +145,20 @@ fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> an
                 } else {
                     "its pace so far (packing included: an older checkpoint)".to_string()
                 };
+                // A plunge search stops at its give-up point only if nothing plunges: the hours are an upper bound.
+                let bound = if c.spec.until == "plunge" && !s.plunged {
+                    " (its give-up point: a plunge ends it sooner)"
+                } else {
+                    ""
+                };
                 let left = studies::status::remaining_seconds(p)
-                    .map(|left| format!(", about {:.1} h more to x/L {:.3} at {pace}", left / 3600.0, s.x_stop))
+                    .map(|left| {
+                        format!(
+                            ", about {:.1} h more to x/L {:.3}{bound} at {pace}",
+                            left / 3600.0,
+                            s.x_stop
+                        )
+                    })
                     .unwrap_or_default();
                 format!(
                     "{}: checkpoint at x/L {:.4} (from {:.3}), {} steps, {:.2} h wall{}{}",
