@@ -93,27 +93,24 @@ fn bad_study_files_name_the_file_and_the_field() {
         "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[model]\nratio = 0.5\n",
     );
     assert!(e.contains("model.ratio"), "{e}");
-    // The values are checked by the 2D+t configuration's own rules, told with the study's field names.
-    let e = error_of(&dir, "froude = [0.5, 5.0]\n[resolution]\nlevel = \"coarse\"\n");
-    assert!(
-        e.contains("`froude`") && e.contains("(0, 3)") && e.contains("got 5"),
-        "{e}"
-    );
-    let e = error_of(
-        &dir,
-        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = -0.2\n",
-    );
-    assert!(e.contains("stop.until") && e.contains("got -0.2"), "{e}");
-    let e = error_of(
-        &dir,
-        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = \"transom\"\ngive_up_at = -1.0\n",
-    );
-    assert!(e.contains("stop.give_up_at"), "{e}");
-    let e = error_of(
-        &dir,
-        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[outputs]\noutput_dx = 0.0\n",
-    );
-    assert!(e.contains("outputs.output_dx") && e.contains("> 0"), "{e}");
+    // The values are checked by the 2D+t configuration's own rules, told with the study's field names:
+    // (the part of the file after `froude = [0.5]` and a coarse level, what the error must hold).
+    let coarse = "[resolution]\nlevel = \"coarse\"\n";
+    let cases: [(&str, &[&str]); 4] = [
+        ("froude = [0.5, 5.0]\n", &["`froude`", "(0, 3)", "got 5"]),
+        ("[stop]\nuntil = -0.2\n", &["stop.until", "got -0.2"]),
+        ("[stop]\nuntil = \"transom\"\ngive_up_at = -1.0\n", &["stop.give_up_at"]),
+        ("[outputs]\noutput_dx = 0.0\n", &["outputs.output_dx", "> 0"]),
+    ];
+    for (tail, wanted) in cases {
+        let body = if tail.starts_with("froude") {
+            format!("{tail}{coarse}")
+        } else {
+            format!("froude = [0.5]\n{coarse}{tail}")
+        };
+        let e = error_of(&dir, &body);
+        assert!(wanted.iter().all(|w| e.contains(w)), "{body}: {e}");
+    }
 }
 
 /// Two short, very coarse cases (to x/L = 0.04) run, are found finished on a re-run (nothing runs again),
