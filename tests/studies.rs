@@ -98,7 +98,7 @@ fn bad_study_files_name_the_file_and_the_field() {
     let coarse = "[resolution]\nlevel = \"coarse\"\n";
     let cases: [(&str, &[&str]); 4] = [
         ("froude = [0.5, 5.0]\n", &["`froude`", "(0, 3)", "got 5"]),
-        ("[stop]\nuntil = -0.2\n", &["stop.until", "got -0.2"]),
+        ("[stop]\nuntil = -0.2\n", &["stop.until", "> 0"]),
         ("[stop]\nuntil = \"transom\"\ngive_up_at = -1.0\n", &["stop.give_up_at"]),
         ("[outputs]\noutput_dx = 0.0\n", &["outputs.output_dx", "> 0"]),
     ];

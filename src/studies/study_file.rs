@@ -285,10 +285,15 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
     let m = &s.model;
     let until = match &s.stop.until {
         toml::Value::String(v) if v == "plunge" || v == "transom" => v.clone(),
-        toml::Value::Float(x) => x.to_string(),
-        toml::Value::Integer(x) => x.to_string(),
+        toml::Value::Float(x) if *x > 0.0 => x.to_string(),
+        toml::Value::Integer(x) if *x > 0 => x.to_string(),
         _ => return err("stop.until", "\"plunge\", \"transom\" or an x/L value > 0"),
     };
+    // A study's cases start at the stem, so its stop points lie beyond it (the 2D+t run alone may start
+    // before the stem and accepts any number).
+    if !(s.stop.give_up_at > 0.0) {
+        return err("stop.give_up_at", "an x/L value > 0");
+    }
     let cases: Vec<CaseSpec> = s
         .froude
         .iter()

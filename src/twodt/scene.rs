@@ -209,13 +209,15 @@ impl TwoDtConfig {
             let got = format!("{} and {}", self.fine_depth_over_draft, self.coarse_height_over_draft);
             return fail(O::Layers, "> 0", &got);
         }
+        // x/L is measured from the stem, and a run may start before it (a still tank ahead of the ship), so an
+        // end point or give-up point below 0 is a valid, if short, run; only a value that is no number is not.
         if let Until::X(x) = self.until {
-            if !positive(x) {
-                return fail(O::Until, "`plunge`, `transom` or an x/L value > 0", &x);
+            if !x.is_finite() {
+                return fail(O::Until, "`plunge`, `transom` or an x/L value", &x);
             }
         }
-        if let Some(x) = self.give_up_at.filter(|&x| !positive(x)) {
-            return fail(O::GiveUpAt, "an x/L value > 0", &x);
+        if let Some(x) = self.give_up_at.filter(|x| !x.is_finite()) {
+            return fail(O::GiveUpAt, "an x/L value", &x);
         }
         if let Some(d) = self.plunge_depth.filter(|&d| !(d.is_finite() && d > 0.0 && d <= 1.0)) {
             return fail(O::PlungeDepth, "in (0, 1]", &d);
