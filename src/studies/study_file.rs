@@ -291,7 +291,7 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
     };
     // A study's cases start at the stem, so its stop points lie beyond it (the 2D+t run alone may start
     // before the stem and accepts any number).
-    if !(s.stop.give_up_at > 0.0) {
+    if !(s.stop.give_up_at > 0.0 && s.stop.give_up_at.is_finite()) {
         return err("stop.give_up_at", "an x/L value > 0");
     }
     let cases: Vec<CaseSpec> = s
