@@ -317,14 +317,10 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             output_dx: s.outputs.output_dx,
         })
         .collect();
-    // The values themselves are checked by the 2D+t run's own rules (one list, `TwoDtConfig::check`), with
-    // the give-up point checked whatever `until` says, and each error is told with the study's field name.
+    // The values themselves are checked by the 2D+t run's own rules (one list, `TwoDtConfig::check`), each
+    // error told with the study's field name; the give-up point has had the study's stricter rule above.
     for case in &cases {
-        let cfg = TwoDtConfig {
-            give_up_at: Some(case.give_up_at),
-            ..case.config()
-        };
-        cfg.check().map_err(|e| {
+        case.config().check().map_err(|e| {
             (
                 study_field(e.option).to_string(),
                 format!("{}, got {}", e.expected, e.got),
