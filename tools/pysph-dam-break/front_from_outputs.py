@@ -1,0 +1,60 @@
+"""The Martin-Moyce front from PySPH's snapshots of `dam_break.py --case mm`, read as bowwave reads its own:
+the largest x over the fluid plus dx/2 (`diagnostics::front`), against Martin & Moyce's Table 2 (n^2 = 2).
+
+Usage: python front_from_outputs.py OUTDIR RES [BOWWAVE_SERIES_CSV]
+Prints Z = x/a at each experimental time T = n t sqrt(g/a) <= 2.5 (linear between snapshots), its relative
+error, and the largest and mean error; with bowwave's series CSV (`run dam-break-mm`), bowwave's Z beside it.
+"""
+import csv
+import glob
+import re
+import sys
+
+import numpy as np
+
+A, G = 0.05715, 9.81
+T_SCALE = 1.0 / (np.sqrt(2.0) * np.sqrt(G / A))  # t = T * T_SCALE
+# Martin & Moyce (1952) Table 2, n^2 = 2, a = 2.25 in (data/reference/..._front_table2_ocellaris.csv)
+TABLE2 = [(0.41, 1.11), (0.84, 1.22), (1.19, 1.44), (1.43, 1.67), (1.63, 1.89), (1.83, 2.11), (1.98, 2.33),
+          (2.20, 2.56), (2.32, 2.78), (2.51, 3.00)]
+
+
+def pysph_front(folder, dx):
+    from pysph.solver.utils import load
+    files = sorted(glob.glob(folder + '/*_[0-9]*.npz'), key=lambda f: int(re.findall(r'_(\d+)\.npz', f)[-1]))
+    out = []
+    for f in files:
+        data = load(f)
+        out.append((data['solver_data']['t'], (np.max(data['arrays']['fluid'].x) + 0.5 * dx) / A))
+    return np.array(out)
+
+
+def bowwave_front(path):
+    rows = list(csv.DictReader(open(path)))
+    return np.array([(float(r['t']), float(r['front']) / A) for r in rows])
+
+
+def main():
+    folder, res = sys.argv[1], float(sys.argv[2])
+    ours = pysph_front(folder, A / res)
+    other = bowwave_front(sys.argv[3]) if len(sys.argv) > 3 else None
+    errs, errs_b = [], []
+    print('T      exp.   PySPH  error' + ('   bowwave  error' if other is not None else ''))
+    for T, z in TABLE2:
+        if T > 2.5:
+            continue
+        zp = np.interp(T * T_SCALE, ours[:, 0], ours[:, 1])
+        errs.append(abs(zp - z) / z)
+        line = '%.2f   %.2f   %.3f  %5.1f %%' % (T, z, zp, 100 * errs[-1])
+        if other is not None:
+            zb = np.interp(T * T_SCALE, other[:, 0], other[:, 1])
+            errs_b.append(abs(zb - z) / z)
+            line += '   %.3f    %5.1f %%' % (zb, 100 * errs_b[-1])
+        print(line)
+    print('PySPH: max %.1f %%, mean %.1f %%' % (100 * max(errs), 100 * np.mean(errs)))
+    if errs_b:
+        print('bowwave: max %.1f %%, mean %.1f %%' % (100 * max(errs_b), 100 * np.mean(errs_b)))
+
+
+if __name__ == '__main__':
+    main()
