@@ -6,27 +6,27 @@ Prints Z = x/a at each experimental time T = n t sqrt(g/a) <= 2.5 (linear betwee
 error, and the largest and mean error; with bowwave's series CSV (`run dam-break-mm`), bowwave's Z beside it.
 """
 import csv
-import glob
-import re
+import os
 import sys
 
 import numpy as np
 
+from snapshots import pysph_snapshots
+
 A, G = 0.05715, 9.81
 T_SCALE = 1.0 / (np.sqrt(2.0) * np.sqrt(G / A))  # t = T * T_SCALE
-# Martin & Moyce (1952) Table 2, n^2 = 2, a = 2.25 in (data/reference/..._front_table2_ocellaris.csv)
-TABLE2 = [(0.41, 1.11), (0.84, 1.22), (1.19, 1.44), (1.43, 1.67), (1.63, 1.89), (1.83, 2.11), (1.98, 2.33),
-          (2.20, 2.56), (2.32, 2.78), (2.51, 3.00)]
+# Martin & Moyce (1952) Table 2, n^2 = 2, a = 2.25 in: the file bowwave's validation reads
+TABLE2_CSV = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'data', 'reference',
+                          'martin_moyce_1952_n2_2_a2.25in_front_table2_ocellaris.csv')
+
+
+def table2():
+    with open(TABLE2_CSV) as f:
+        return [(float(r[0]), float(r[1])) for r in list(csv.reader(f))[1:]]
 
 
 def pysph_front(folder, dx):
-    from pysph.solver.utils import load
-    files = sorted(glob.glob(folder + '/*_[0-9]*.npz'), key=lambda f: int(re.findall(r'_(\d+)\.npz', f)[-1]))
-    out = []
-    for f in files:
-        data = load(f)
-        out.append((data['solver_data']['t'], (np.max(data['arrays']['fluid'].x) + 0.5 * dx) / A))
-    return np.array(out)
+    return np.array([(t, (np.max(fl.x) + 0.5 * dx) / A) for t, fl in pysph_snapshots(folder)])
 
 
 def bowwave_front(path):
@@ -40,7 +40,7 @@ def main():
     other = bowwave_front(sys.argv[3]) if len(sys.argv) > 3 else None
     errs, errs_b = [], []
     print('T      exp.   PySPH  error' + ('   bowwave  error' if other is not None else ''))
-    for T, z in TABLE2:
+    for T, z in table2():
         if T > 2.5:
             continue
         zp = np.interp(T * T_SCALE, ours[:, 0], ours[:, 1])

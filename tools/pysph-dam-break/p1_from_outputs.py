@@ -16,6 +16,8 @@ import sys
 
 import numpy as np
 
+from snapshots import pysph_snapshots
+
 H, L, G, RHO = 0.6, 3.2196, 9.81, 1000.0
 T_SCALE = np.sqrt(H / G)
 PROFILE_X = np.array([2.4, 2.7, 3.0, 3.1, 3.2])
@@ -46,12 +48,8 @@ def read_vtp(fn):
 
 
 def pysph_frames(folder):
-    from pysph.solver.utils import load
-    files = sorted(glob.glob(folder + '/*_[0-9]*.npz'), key=lambda f: int(re.findall(r'_(\d+)\.npz', f)[-1]))
-    for f in files:
-        data = load(f)
-        fl = data['arrays']['fluid']
-        yield data['solver_data']['t'], fl.x, fl.y, fl.p, fl.m / fl.rho
+    for t, fl in pysph_snapshots(folder):
+        yield t, fl.x, fl.y, fl.p, fl.m / fl.rho
 
 
 def bowwave_frames(folder, dx):
