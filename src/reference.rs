@@ -41,6 +41,10 @@ const FILES: &[(&str, &str)] = &[
         "buchner_p2",
         include_str!("../data/reference/buchner2002_damBreak_H600_P2_trixiparticles.csv"),
     ),
+    (
+        "trixi_p1_centre",
+        include_str!("../data/reference/trixiparticles_wcsph_damBreak_P4_H600_80_400.csv"),
+    ),
 ];
 
 /// Parses an embedded reference file into a table (header kept as column names).

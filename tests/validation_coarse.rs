@@ -209,6 +209,55 @@ fn impact_time_measure_reads_the_published_curves() {
     assert!((smoothed - 2.633).abs() < 0.02, "{smoothed}");
 }
 
+/// The window mean used to sum up P1's rise: exact on a ramp (its midpoint value) whatever the sampling, and
+/// NaN when the signal does not cover the window.
+#[test]
+fn window_mean_of_a_ramp_is_its_midpoint_value() {
+    let dense: Vec<f64> = (0..=700).map(|k| 0.01 * k as f64).collect();
+    let sparse = vec![0.0, 2.2, 2.71, 3.3, 7.0];
+    for t in [dense, sparse] {
+        let p: Vec<f64> = t.iter().map(|x| 3.0 * x - 1.0).collect();
+        let m = validation::mean_over(&t, &p, 2.5, 3.0);
+        assert!((m - (3.0 * 2.75 - 1.0)).abs() < 1e-12, "{m}");
+    }
+    let short = [2.6, 3.0];
+    assert!(validation::mean_over(&short, &[1.0, 1.0], 2.5, 3.0).is_nan());
+}
+
+/// TrixiParticles' reference runs at P1's centre, as embedded (`data/reference/`, transcribed from their JSON
+/// files): 701 samples 0.01 t√(g/H) apart from 0 to 7, water at the sensor from t* = 2.46 in both runs (the
+/// impact), and their rise converged between H/dx 80 and 400: means over [`validation::P1_RISE_WINDOW`] of
+/// 0.0737 and 0.0720 ρgH, where Marrone's P1 curves give 0.455 (H/dx 40), 0.502 (80) and 0.533 (320).
+#[test]
+fn trixiparticles_p1_centre_reference_reads_as_transcribed() {
+    use bowwave::reference::{col, load, named};
+    let (from, to) = validation::P1_RISE_WINDOW;
+    let mut means = vec![];
+    for res in [80.0, 400.0] {
+        let (n, t, p) = validation::trixi_p1_centre(res);
+        assert_eq!(n as f64, res);
+        assert_eq!(t.len(), 701);
+        for (k, tk) in t.iter().enumerate() {
+            assert!((tk - 0.01 * k as f64).abs() < 1e-9, "t*[{k}] = {tk}");
+        }
+        let wet = p.iter().position(|&v| v != 0.0).unwrap();
+        assert_eq!(wet, 246, "first non-zero sample");
+        means.push(validation::mean_over(&t, &p, from, to));
+    }
+    assert!(
+        (means[0] - 0.0737).abs() < 5e-4 && (means[1] - 0.0720).abs() < 5e-4,
+        "{means:?}"
+    );
+    // The nearer run is picked by resolution (in log; they meet at √(80 · 400) ≈ 179): H/dx 40 and 170 read
+    // the 80 run, 200 the 400 one.
+    assert_eq!(validation::trixi_p1_centre(40.0).0, 80);
+    assert_eq!(validation::trixi_p1_centre(170.0).0, 80);
+    assert_eq!(validation::trixi_p1_centre(200.0).0, 400);
+    let m = load("marrone_p1");
+    let marrone = |c: &str| validation::mean_over(&col(&m, 0), &named(&m, c), from, to);
+    assert!((marrone("p_over_rho_g_H_deltaSPH_H_over_dx_80") - 0.502).abs() < 5e-3);
+}
+
 #[test]
 fn dam_break_energy_loss_before_impact_decreases_with_resolution() {
     let end = 2.3 * (0.6f64 / 9.81).sqrt();
@@ -242,4 +291,19 @@ fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
         "closure at t* = {t_star}"
     );
     assert!(c.circulation < 0.0, "circulation {}", c.circulation);
+    // The same run's reported pressure checks, among them P1's rise against Marrone and P1's centre against
+    // TrixiParticles, are computed (they carry no tolerance: docs/method.md, checks 12–14).
+    let checks = validation::dam_break(&r);
+    validation::print_checks(&checks);
+    for key in [
+        "(the rise) vs Marrone",
+        "P1c (8.4 mm) mean |p-p_ref|",
+        "P1c mean p* over t*",
+    ] {
+        let c = checks
+            .iter()
+            .find(|c| c.quantity.contains(key))
+            .unwrap_or_else(|| panic!("no check `{key}`"));
+        assert!(c.error.is_finite(), "{}: {}", c.quantity, c.error);
+    }
 }

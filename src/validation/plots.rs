@@ -60,6 +60,40 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
                 )?;
                 files.push(p);
             }
+            // P1's centre read by a small sensor, beside another code's reference runs read the same way.
+            if let Some(pc) = r.series.column("pstar_P1c") {
+                let mut series = vec![Series {
+                    name: format!("bowwave H/dx={res:.0}, 8.4 mm sensor"),
+                    points: xy(&ts, &pc),
+                    style: Style::Line,
+                }];
+                for n in [80.0, 400.0] {
+                    let (tres, tt, tp) = super::trixi_p1_centre(n);
+                    series.push(Series {
+                        name: format!("TrixiParticles WCSPH H/dx={tres}, 8.4 mm"),
+                        points: xy(&tt, &tp),
+                        style: Style::Line,
+                    });
+                }
+                let m = reference::load("marrone_p1");
+                series.push(Series {
+                    name: "Marrone 2011 H/dx=320, 90 mm".into(),
+                    points: xy(
+                        &reference::col(&m, 0),
+                        &named(&m, "p_over_rho_g_H_deltaSPH_H_over_dx_320"),
+                    ),
+                    style: Style::Line,
+                });
+                let p = dir.join("dam-break_P1c.png");
+                line_plot(
+                    &p,
+                    "Dam break: pressure at the centre of P1 (y = 0.16 m)",
+                    "t sqrt(g/H)",
+                    "p / (rho g H)",
+                    &series,
+                )?;
+                files.push(p);
+            }
         }
         "jet-wall" | "jet-plate" | "jet-floor" => {
             // Mean Cp of each sensor over the steady window, and Taylor's curve.
