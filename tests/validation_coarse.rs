@@ -291,14 +291,17 @@ fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
         "closure at t* = {t_star}"
     );
     assert!(c.circulation < 0.0, "circulation {}", c.circulation);
-    // The same run's reported pressure checks, among them P1's rise against Marrone and P1's centre against
-    // TrixiParticles, are computed (they carry no tolerance: docs/method.md, checks 12–14).
+    // The same run's reported pressure checks, among them P1's rise against Marrone, P1's centre against
+    // TrixiParticles and P1/P2 at Greco's placement, are computed (they carry no tolerance: docs/method.md,
+    // checks 12–14 and "Two checks for the owner to decide").
     let checks = validation::dam_break(&r);
     validation::print_checks(&checks);
     for key in [
         "(the rise) vs Marrone",
         "P1c (8.4 mm) mean |p-p_ref|",
         "P1c mean p* over t*",
+        "P1g (Greco's placement) first impact",
+        "P2g (Greco's placement) mean",
     ] {
         let c = checks
             .iter()
