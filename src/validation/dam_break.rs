@@ -5,21 +5,19 @@ use super::{check, col, Check};
 use crate::cases::run::RunResult;
 use crate::reference::{self, interp, named};
 
-/// The Marrone et al. (2011) column closest to resolution `res` (40, 80 or 320).
-fn marrone_column(res: f64) -> (usize, &'static str) {
-    let choices = [
-        (40usize, "p_over_rho_g_H_deltaSPH_H_over_dx_40"),
-        (80, "p_over_rho_g_H_deltaSPH_H_over_dx_80"),
-        (320, "p_over_rho_g_H_deltaSPH_H_over_dx_320"),
-    ];
+/// Of a reference's resolutions (H/dx), the one closest to `res` in log (the first of two equally close).
+fn nearest_resolution(res: f64, choices: &[usize]) -> usize {
+    let distance = |n: usize| ((n as f64).ln() - res.ln()).abs();
     *choices
         .iter()
-        .min_by(|a, b| {
-            ((a.0 as f64).ln() - res.ln())
-                .abs()
-                .total_cmp(&((b.0 as f64).ln() - res.ln()).abs())
-        })
-        .unwrap()
+        .min_by(|a, b| distance(**a).total_cmp(&distance(**b)))
+        .expect("a reference has at least one resolution")
+}
+
+/// The Marrone et al. (2011) column closest to resolution `res` (40, 80 or 320).
+fn marrone_column(res: f64) -> (usize, String) {
+    let n = nearest_resolution(res, &[40, 80, 320]);
+    (n, format!("p_over_rho_g_H_deltaSPH_H_over_dx_{n}"))
 }
 
 /// First time a pressure signal exceeds `level` (linear interpolation); NaN if never.
@@ -117,11 +115,7 @@ const TRIXI_RHO0: f64 = 1000.0;
 /// at H/dx 80 or 400, the one closer to `res` (in log): (its H/dx, t√(g/H), p/(ρ0 g H)).
 pub fn trixi_p1_centre(res: f64) -> (usize, Vec<f64>, Vec<f64>) {
     let t = reference::load("trixi_p1_centre");
-    let n = if (res.ln() - 80f64.ln()).abs() <= (res.ln() - 400f64.ln()).abs() {
-        80
-    } else {
-        400
-    };
+    let n = nearest_resolution(res, &[80, 400]);
     let ts = reference::col(&t, 0)
         .iter()
         .map(|s| s * (TRIXI_G / TRIXI_H).sqrt())
@@ -145,16 +139,20 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
     let noise = r.sim.pressure_noise() / (r.case.fluid.rho0 * r.case.gravity_magnitude() * r.case.scales.length);
     let (nres, colname) = marrone_column(res);
     let ts = col(r, "t_star");
+    let marrone = |name: &str| {
+        let m = reference::load(name);
+        (reference::col(&m, 0), named(&m, &colname))
+    };
+    let (marrone_p1, marrone_p2) = (marrone("marrone_p1"), marrone("marrone_p2"));
+    let marrone_impact = impact_time(&marrone_p1.0, &marrone_p1.1);
     let mut out = vec![];
-    for (probe, mref, bref) in [("P1", "marrone_p1", "buchner_p1"), ("P2", "marrone_p2", "buchner_p2")] {
+    for (probe, (tm, pm), bref) in [("P1", &marrone_p1, "buchner_p1"), ("P2", &marrone_p2, "buchner_p2")] {
         let p = col(r, &format!("pstar_{probe}"));
-        let m = reference::load(mref);
-        let (tm, pm) = (reference::col(&m, 0), named(&m, colname));
         let b = reference::load(bref);
         let (tb, pb) = (reference::col(&b, 0), reference::col(&b, 1));
         if probe == "P1" {
             let ours = impact_time(&ts, &p);
-            let theirs = impact_time(&tm, &pm);
+            let theirs = marrone_impact;
             out.push(check(
                 r,
                 &format!("P1 first impact t*(p* >= {IMPACT_LEVEL}, {IMPACT_SMOOTHING} t* mean) vs Marrone H/dx={nres}, |diff|"),
@@ -176,7 +174,7 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
             ));
         }
         for (label, tr, pr) in [
-            (format!("Marrone H/dx={nres}"), &tm, &pm),
+            (format!("Marrone H/dx={nres}"), tm, pm),
             ("Buchner exp.".to_string(), &tb, &pb),
         ] {
             out.push(check(
@@ -192,9 +190,8 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
     // P1's rise after the impact, as one number per curve: the mean over the half t* after it.
     let (window_from, window_to) = P1_RISE_WINDOW;
     let p1 = col(r, "pstar_P1");
-    let m = reference::load("marrone_p1");
     let ours = mean_over(&ts, &p1, window_from, window_to);
-    let theirs = mean_over(&reference::col(&m, 0), &named(&m, colname), window_from, window_to);
+    let theirs = mean_over(&marrone_p1.0, &marrone_p1.1, window_from, window_to);
     out.push(check(
         r,
         &format!("P1 mean p* over t* in [{window_from},{window_to}] (the rise) vs Marrone H/dx={nres}, |diff|"),
@@ -228,14 +225,12 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
     }
     // P1 and P2 read at Greco's (2001) placement, the sensors' tops at Buchner's centres (Adami et al. 2012,
     // TrixiParticles' Marrone set-up): reported beside the checks above, which keep the nominal positions.
-    for (probe, mref) in [("P1g", "marrone_p1"), ("P2g", "marrone_p2")] {
+    for (probe, (tm, pm)) in [("P1g", &marrone_p1), ("P2g", &marrone_p2)] {
         let Some(p) = r.series.column(&format!("pstar_{probe}")) else {
             continue;
         };
-        let m = reference::load(mref);
-        let (tm, pm) = (reference::col(&m, 0), named(&m, colname));
         if probe == "P1g" {
-            let (ours, theirs) = (impact_time(&ts, &p), impact_time(&tm, &pm));
+            let (ours, theirs) = (impact_time(&ts, &p), marrone_impact);
             out.push(check(
                 r,
                 &format!("P1g (Greco's placement) first impact vs Marrone H/dx={nres}, |diff|"),
@@ -250,7 +245,7 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
             &format!("{probe} (Greco's placement) mean |p-p_ref|/(rho g H), t* in [2,7], vs Marrone H/dx={nres}"),
             f64::NAN,
             f64::NAN,
-            mean_abs_difference(&ts, &p, &tm, &pm),
+            mean_abs_difference(&ts, &p, tm, pm),
             None,
         ));
     }
