@@ -251,7 +251,7 @@ proptest! {
                         dx: Some(draft / 5.0),
                         x0: Some(0.5 * (a + b)),
                         settle_crossings: 0.0,
-                        packing: Some(false),
+                        packing: bowwave::twodt::config::Packing::Off,
                         ..Default::default()
                     };
                     if let Ok(mut scene) = bowwave::twodt::scene::build(s, &cfg) {
@@ -294,7 +294,7 @@ proptest! {
                 // A study file checks its own fields, so every configuration it resolves must pass the 2D+t
                 // scene's checks too (else the study would read and its cases fail later).
                 let checked = no_panic("case configurations", &text, || {
-                    study.cases.iter().map(|c| c.config().check()).collect::<Result<Vec<()>, _>>()
+                    study.cases.iter().map(|c| c.config.check()).collect::<Result<Vec<()>, _>>()
                 })?;
                 prop_assert!(checked.is_ok(), "a study that reads has a case the scene refuses: {:#}", checked.unwrap_err());
             }

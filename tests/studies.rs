@@ -44,9 +44,10 @@ fn finer(study: &Study) -> Study {
         cases: study
             .cases
             .iter()
-            .map(|c| bowwave::studies::study_file::CaseSpec {
-                dx: c.dx * 0.9,
-                ..c.clone()
+            .map(|c| {
+                let mut c = c.clone();
+                c.config.dx = Some(c.dx() * 0.9);
+                c
             })
             .collect(),
         ..study.clone()
@@ -80,27 +81,36 @@ fn bad_study_files_name_the_file_and_the_field() {
     assert!(e.contains("`resolution`") && e.contains("exactly one"), "{e}");
     let e = error_of(
         &dir,
-        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = \"stern\"\n",
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[config]\nuntil = \"stern\"\n",
     );
-    assert!(e.contains("stop.until"), "{e}");
+    assert!(e.contains("`config`") && e.contains("stern"), "{e}");
     let e = error_of(
         &dir,
-        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[model]\nratoi = 1.5\n",
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[config]\nratoi = 1.5\n",
     );
     assert!(e.contains("ratoi"), "{e}");
     let e = error_of(
         &dir,
-        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[model]\nratio = 0.5\n",
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[config]\nratio = 0.5\n",
     );
-    assert!(e.contains("model.ratio"), "{e}");
+    assert!(e.contains("config.ratio"), "{e}");
     // The values are checked by the 2D+t configuration's own rules, told with the study's field names:
     // (the part of the file after `froude = [0.5]` and a coarse level, what the error must hold).
     let coarse = "[resolution]\nlevel = \"coarse\"\n";
-    let cases: [(&str, &[&str]); 4] = [
+    let cases: [(&str, &[&str]); 8] = [
         ("froude = [0.5, 5.0]\n", &["`froude`", "(0, 3)", "got 5"]),
-        ("[stop]\nuntil = -0.2\n", &["stop.until", "> 0"]),
-        ("[stop]\nuntil = \"transom\"\ngive_up_at = -1.0\n", &["stop.give_up_at"]),
-        ("[outputs]\noutput_dx = 0.0\n", &["outputs.output_dx", "> 0"]),
+        ("[config]\nuntil = -0.2\n", &["config.until", "> 0"]),
+        (
+            "[config]\nuntil = \"transom\"\ngive_up_at = -1.0\n",
+            &["config.give_up_at"],
+        ),
+        ("[config]\noutput_dx = 0.0\n", &["config.output_dx", "> 0"]),
+        // A case's own options are checked, and told with the case's table.
+        ("[case.1]\nc0 = -3\n", &["case.1.c0", "> 0"]),
+        ("[case.2]\nc0 = 3\n", &["case.2", "from 1 to 1"]),
+        ("[case.1]\nratoi = 2\n", &["case.1", "ratoi"]),
+        // fr and dx come from `froude` and `[resolution]` only.
+        ("[config]\ndx = 1e-3\n", &["config.dx", "`resolution`"]),
     ];
     for (tail, wanted) in cases {
         let body = if tail.starts_with("froude") {
@@ -121,7 +131,7 @@ fn bad_study_files_name_the_file_and_the_field() {
 fn finished_cases_are_skipped_on_rerun_and_collected() {
     let (study, dir) = fresh_study(
         "resume",
-        "froude = [0.55, 0.64]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = 0.04\n",
+        "froude = [0.55, 0.64]\n[resolution]\nlevel = \"coarse\"\n[config]\nuntil = 0.04\n",
     );
     let out = dir.join("out");
     let opts = runner::StudyOptions {
@@ -189,7 +199,7 @@ fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
     use bowwave::studies::collect::{report, trends, RESOLVED_JET_PARTICLES};
     let (study, dir) = fresh_study(
         "jet-guard",
-        "froude = [0.55, 0.64]\n[resolution]\nlevel = \"coarse\"\n[stop]\nuntil = 0.01\n",
+        "froude = [0.55, 0.64]\n[resolution]\nlevel = \"coarse\"\n[config]\nuntil = 0.01\n",
     );
     let out = dir.join("out");
     runner::run_cases(&study, &serial_options(&out)).unwrap();
@@ -232,7 +242,7 @@ fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
 fn one_froude_number_at_two_spacings_compares_both_and_claims_no_trend() {
     let (study, dir) = fresh_study(
         "convergence",
-        "froude = [0.55, 0.55]\n[resolution]\ndx = [3e-3, 2.5e-3]\n[stop]\nuntil = 0.04\n",
+        "froude = [0.55, 0.55]\n[resolution]\ndx = [3e-3, 2.5e-3]\n[config]\nuntil = 0.04\n",
     );
     let out = dir.join("out");
     let opts = serial_options(&out);
@@ -271,15 +281,18 @@ fn dry_run_does_not_pack_the_scenes() {
     let path = write_study(
         &dir,
         "dry",
-        "froude = [0.5]\n[resolution]\ndx = [4e-3]\n[model]\nratio = 1.5\n",
+        "froude = [0.5]\n[resolution]\ndx = [4e-3]\n[config]\nratio = 1.5\n",
     );
     let study = Study::read(&path).unwrap();
     let spec = &study.cases[0];
-    assert_eq!(runner::dry_run_config(spec).packing, Some(false));
+    assert_eq!(
+        runner::dry_run_config(spec).packing,
+        bowwave::twodt::config::Packing::Off
+    );
     let est = runner::dry_run(&study).unwrap();
     let hull = bowwave::geometry::hull_file::HullOffsets::read(&study.hull_path).unwrap();
     let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&hull));
-    let packed = bowwave::twodt::scene::build(surface, &spec.config()).unwrap();
+    let packed = bowwave::twodt::scene::build(surface, &spec.config).unwrap();
     assert!(packed.packing.is_some(), "the case itself packs (r = 1.5)");
     assert_eq!(est[0].particles, packed.sim.n_fluid());
 }
@@ -291,7 +304,7 @@ fn dry_run_does_not_pack_the_scenes() {
 fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
     let (study, dir) = fresh_study(
         &format!("killed-{}", std::process::id()),
-        "froude = [0.64]\n[resolution]\ndx = [4e-3]\n[stop]\nuntil = 0.05\n",
+        "froude = [0.64]\n[resolution]\ndx = [4e-3]\n[config]\nuntil = 0.05\n",
     );
     let options = |out: &Path, halt: Option<u64>| runner::StudyOptions {
         checkpoint: bowwave::twodt::checkpoint::CheckpointPolicy {
@@ -345,7 +358,7 @@ fn status_tells_finished_stopped_and_unstarted_cases_apart() {
     use bowwave::studies::status::{remaining_seconds, status, CaseState};
     let (study, dir) = fresh_study(
         &format!("status-{}", std::process::id()),
-        "froude = [0.64, 0.6, 0.55]\n[resolution]\ndx = [4e-3, 4e-3, 4e-3]\n[stop]\nuntil = 0.05\n",
+        "froude = [0.64, 0.6, 0.55]\n[resolution]\ndx = [4e-3, 4e-3, 4e-3]\n[config]\nuntil = 0.05\n",
     );
     let out = dir.join("out");
     let only = |case: usize, halt: Option<u64>| runner::StudyOptions {
@@ -427,4 +440,89 @@ fn shipped_study_files_read() {
         }
     }
     assert!(names.iter().any(|n| n == "quick.toml"), "{names:?}");
+}
+
+/// `path`'s text with the columns named `wall_seconds` and `cpu_seconds` emptied: the cost of a run differs
+/// from run to run; every other byte must not.
+fn without_timings(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
+    let timing: Vec<bool> = header.iter().map(|h| h.ends_with("_seconds")).collect();
+    let mut out = header.join(",") + "\n";
+    for line in lines {
+        let cells: Vec<&str> = line
+            .split(',')
+            .enumerate()
+            .map(|(k, c)| if timing.get(k) == Some(&true) { "" } else { c })
+            .collect();
+        out += &(cells.join(",") + "\n");
+    }
+    out
+}
+
+/// The README's job-array recipe, tested for real: three `bowwave study FILE --case N` processes started
+/// together into one folder write the same tables (`jets.csv` less its timing columns, `comparison.csv`,
+/// `report.md`) as one serial run, byte for byte, and leave no temporary file. Regression: every write went
+/// through the same `NAME.tmp`, and each job gathered the tables from what had finished when it ended, so the
+/// last job to rename could leave out a case (`studies::lock`).
+#[test]
+fn concurrent_case_jobs_write_the_serial_tables() {
+    let (study, dir) = fresh_study(
+        "jobs",
+        "froude = [0.55, 0.6, 0.64]\n[resolution]\ndx = [4e-3, 4e-3, 4e-3]\n[config]\nuntil = 0.02\n",
+    );
+    let exe = env!("CARGO_BIN_EXE_bowwave");
+    let run = |out: &Path, case: Option<usize>| {
+        let mut c = std::process::Command::new(exe);
+        c.args(["--threads", "1", "study"])
+            .arg(&study.file)
+            .arg("--out")
+            .arg(out)
+            .arg("-q");
+        if let Some(k) = case {
+            c.args(["--case", &k.to_string()]);
+        }
+        c.stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped());
+        c.spawn().unwrap()
+    };
+    let serial = dir.join("serial");
+    let together = dir.join("together");
+    let jobs: Vec<_> = (1..=3).map(|k| run(&together, Some(k))).collect();
+    for job in jobs {
+        let o = job.wait_with_output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    }
+    let o = run(&serial, None).wait_with_output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(runner::collect_finished(&study, &together).len(), 3);
+    assert_eq!(
+        without_timings(&together.join("jets.csv")),
+        without_timings(&serial.join("jets.csv"))
+    );
+    for f in ["comparison.csv", "report.md"] {
+        let a = std::fs::read(together.join(f)).unwrap();
+        let b = std::fs::read(serial.join(f)).unwrap();
+        assert!(a == b, "{f} differs from the serial run's");
+    }
+    let temporaries: Vec<_> = walk(&together)
+        .into_iter()
+        .filter(|p| p.to_string_lossy().ends_with(".tmp"))
+        .collect();
+    assert!(temporaries.is_empty(), "{temporaries:?}");
+}
+
+/// Every file under `dir`.
+fn walk(dir: &Path) -> Vec<PathBuf> {
+    let mut files = vec![];
+    for e in std::fs::read_dir(dir).unwrap().flatten() {
+        let p = e.path();
+        if p.is_dir() {
+            files.extend(walk(&p));
+        } else {
+            files.push(p);
+        }
+    }
+    files
 }

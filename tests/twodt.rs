@@ -43,7 +43,10 @@ fn wedge_sections_in_2dt_match_the_rigid_wedge() {
 /// written.
 #[test]
 fn athena_coarse_run_conserves_mass_and_keeps_the_far_field_calm() {
-    let cfg = athena_cfg(None, Until::X(0.12));
+    let cfg = TwoDtConfig {
+        vtk: true,
+        ..athena_cfg(None, Until::X(0.12))
+    };
     let dir = std::env::temp_dir().join(format!("bowwave-twodt-test-{}", std::process::id()));
     let r = run(athena(), &cfg, &quiet_options(&dir, true)).expect("2D+t run");
     assert!(r.blowup.is_none(), "{:?}", r.blowup);
@@ -73,10 +76,9 @@ fn athena_cfg(x0: Option<f64>, until: Until) -> TwoDtConfig {
     }
 }
 
-/// Outputs into `dir`, no progress bar; with `all`, VTK and plots too.
+/// Outputs into `dir`, no progress bar; with `all`, plots too.
 fn quiet_options(dir: &std::path::Path, all: bool) -> TwoDtOptions {
     TwoDtOptions {
-        vtk: all,
         plots: all,
         ..TwoDtOptions::quiet(dir.to_path_buf())
     }
@@ -221,12 +223,12 @@ fn still_tank(cfg: &TwoDtConfig, label: &str) -> (f64, f64) {
 fn graded_rows_stay_at_rest_only_after_packing() {
     let graded = TwoDtConfig {
         coarse_ratio: 1.5,
-        packing: Some(false),
+        packing: bowwave::twodt::config::Packing::Off,
         ..athena_cfg(Some(-0.4), Until::X(-0.2))
     };
     let (ke_lattice, _) = still_tank(&graded, "graded-lattice");
     let packed = TwoDtConfig {
-        packing: None,
+        packing: bowwave::twodt::config::Packing::Auto,
         ..graded
     };
     let (ke_packed, far) = still_tank(&packed, "graded-packed");
@@ -241,7 +243,7 @@ fn graded_rows_stay_at_rest_only_after_packing() {
 #[test]
 fn packing_converges_when_the_tank_is_not_a_whole_number_of_spacings() {
     let cfg = TwoDtConfig {
-        packing: Some(true),
+        packing: bowwave::twodt::config::Packing::On,
         coarse_ratio: 1.5,
         dx: Some(4e-3),
         ..athena_cfg(Some(-0.4), Until::X(-0.2))
@@ -421,7 +423,7 @@ fn plunge_instant_found_between_checks_is_the_one_a_check_every_step_finds() {
         dx: Some(7e-4),
         until: Until::Plunge,
         give_up_at: Some(0.25),
-        plunge_circulation: None,
+        plunge_circulation: bowwave::twodt::config::PlungeCirculation::Off,
         detect_every,
         ..Default::default()
     };

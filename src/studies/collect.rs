@@ -36,7 +36,7 @@ pub fn published_for<'a>(hull: &str, recs: &'a [CaseRecord]) -> Vec<(PublishedJe
     let published: Vec<PublishedJet> = published_jets().into_iter().filter(|p| p.hull == hull).collect();
     recs.iter()
         .filter_map(|r| {
-            let p = published.iter().find(|p| (r.spec.fr - p.fr).abs() < 1e-9)?;
+            let p = published.iter().find(|p| (r.spec.fr() - p.fr).abs() < 1e-9)?;
             Some((p.clone(), r))
         })
         .collect()

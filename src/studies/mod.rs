@@ -5,6 +5,7 @@
 pub mod charts;
 pub mod collect;
 pub mod figures;
+pub mod lock;
 pub mod runner;
 pub mod slab;
 pub mod status;
@@ -15,8 +16,12 @@ pub mod twodt_convergence;
 use std::path::Path;
 
 /// Gathers the finished cases of `study` in `out` into `jets.csv`, `comparison.csv`, `report.md`, the figures
-/// and the manifest. Returns the number of finished cases.
+/// and the manifest, holding the study folder's lock ([`lock`]). Returns the number of finished cases.
 pub fn collect_all(study: &study_file::Study, out: &Path) -> anyhow::Result<usize> {
+    lock::with_study_lock(out, || collect_locked(study, out))
+}
+
+fn collect_locked(study: &study_file::Study, out: &Path) -> anyhow::Result<usize> {
     let recs = runner::collect_finished(study, out);
     let hull = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
     let status = format!("{:?}", hull.meta.status).to_lowercase();
@@ -30,6 +35,6 @@ pub fn collect_all(study: &study_file::Study, out: &Path) -> anyhow::Result<usiz
         study.cases.len(),
     )?;
     figures::write_all(out, &hull.meta.name, &recs, out)?;
-    runner::write_manifest(study, out)?;
+    runner::write_manifest_locked(study, out)?;
     Ok(recs.len())
 }

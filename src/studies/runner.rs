@@ -102,7 +102,7 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
 
 /// The configuration a dry run builds its scene from: the case's, without the packing.
 pub fn dry_run_config(spec: &CaseSpec) -> crate::twodt::scene::TwoDtConfig {
-    spec.config().unpacked()
+    spec.config.unpacked()
 }
 
 /// The study's hull file read and interpolated into its surface.
@@ -136,8 +136,13 @@ struct ManifestCase<'a> {
     steps: Option<u64>,
 }
 
-/// Writes `manifest.json` from the cases finished so far.
+/// Writes `manifest.json` from the cases finished so far, holding the study folder's lock.
 pub fn write_manifest(study: &Study, out: &Path) -> anyhow::Result<()> {
+    super::lock::with_study_lock(out, || write_manifest_locked(study, out))
+}
+
+/// [`write_manifest`] for a caller that holds the lock.
+pub(crate) fn write_manifest_locked(study: &Study, out: &Path) -> anyhow::Result<()> {
     let status = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)
         .map(|h| format!("{:?}", h.meta.status).to_lowercase())
         .unwrap_or_else(|_| "unknown".into());
@@ -189,7 +194,7 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
         .filter(|c| {
             let done = finished(&opts.out_dir, c).is_some();
             if done && !opts.force {
-                log::info!("case {} (Fr {}) already finished, skipped", c.index, c.fr);
+                log::info!("case {} (Fr {}) already finished, skipped", c.index, c.fr());
             }
             opts.force || !done
         })
@@ -224,7 +229,6 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
     let queue = Mutex::new(todo.into_iter().rev().collect::<Vec<_>>());
     let errors: Mutex<Vec<String>> = Mutex::new(vec![]);
     let ran = Mutex::new(0usize);
-    let manifest_lock = Mutex::new(());
     std::thread::scope(|scope| {
         for _ in 0..jobs {
             scope.spawn(|| {
@@ -242,13 +246,14 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
                     let r = pool.install(|| run_one(&hull, study, &spec, opts, &multi));
                     match r {
                         Ok(()) => *ran.lock().expect("lock") += 1,
-                        Err(e) => errors
-                            .lock()
-                            .expect("lock")
-                            .push(format!("case {} (Fr {}): {e:#}", spec.index, spec.fr)),
+                        Err(e) => {
+                            errors
+                                .lock()
+                                .expect("lock")
+                                .push(format!("case {} (Fr {}): {e:#}", spec.index, spec.fr()))
+                        }
                     }
                     overall.inc(1);
-                    let _guard = manifest_lock.lock().expect("lock");
                     if let Err(e) = write_manifest(study, &opts.out_dir) {
                         errors.lock().expect("lock").push(format!("manifest: {e:#}"));
                     }
@@ -276,17 +281,15 @@ fn run_one(
     let topts = TwoDtOptions {
         out_dir: dir.clone(),
         progress: opts.progress,
-        vtk: spec.vtk,
         plots: true,
-        frames: spec.frames,
         multi: Some(multi.clone()),
-        label: format!("{} Fr {:.3} ", study.spec.name, spec.fr),
+        label: format!("{} Fr {:.3} ", study.spec.name, spec.fr()),
         checkpoint: crate::twodt::checkpoint::CheckpointPolicy {
             resume: !opts.force,
             ..opts.checkpoint.clone()
         },
     };
-    let result = run(hull.clone(), &spec.config(), &topts)?;
+    let result = run(hull.clone(), &spec.config, &topts)?;
     let rec = CaseRecord {
         spec: spec.clone(),
         result,

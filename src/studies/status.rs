@@ -44,7 +44,7 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
                     Some(h) => std::sync::Arc::clone(h),
                     None => hull.insert(surface(study)?).clone(),
                 };
-                match crate::twodt::run::progress(&hull_surface, &spec.config(), &dir)? {
+                match crate::twodt::run::progress(&hull_surface, &spec.config, &dir)? {
                     Some(p) => CaseState::InProgress(p),
                     None => CaseState::NotStarted,
                 }

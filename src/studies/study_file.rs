@@ -4,8 +4,10 @@
 //! `docs/studies.md`.
 
 use crate::input_error::{parse_toml, read_text, InputError};
-use crate::twodt::scene::{auto_dx, estimated_hpj_over_d, ConfigOption, TwoDtConfig, Until};
+use crate::twodt::config::{ConfigOption, TwoDtConfig, Until};
+use crate::twodt::scene::{auto_dx, estimated_hpj_over_d};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// The study file as written.
@@ -21,12 +23,13 @@ pub struct StudyFile {
     /// Ship Froude numbers U/√(gL), one case each.
     pub froude: Vec<f64>,
     pub resolution: Resolution,
+    /// Options of every case, in the keys of `bowwave twodt` (`TwoDtConfig`; `--give-up-at` is
+    /// `give_up_at`), except `fr` and `dx`, which `froude` and `[resolution]` set.
     #[serde(default)]
-    pub model: Model,
+    pub config: toml::Table,
+    /// Options of one case, `[case.N]` for the N-th Froude number (1-based), over `[config]`.
     #[serde(default)]
-    pub stop: Stop,
-    #[serde(default)]
-    pub outputs: Outputs,
+    pub case: BTreeMap<String, toml::Table>,
 }
 
 /// How dx_f/L is chosen: exactly one of `dx` (one value per Froude number), `rule = "auto"` (H_pj/dx > 20,
@@ -62,131 +65,31 @@ impl Level {
     }
 }
 
-/// Domain and model options; every default is the 2D+t run's (see `TwoDtConfig`).
-#[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Model {
-    /// dx_c/dx_f below the transition (1 = uniform).
-    pub ratio: f64,
-    /// W/B, thesis §10.1.2: 4.
-    pub width_over_beam: f64,
-    /// Z/D, thesis §10.1.2 and appendix D: 2.
-    pub depth_over_draft: f64,
-    /// c0/√(gL); absent: 10 × the expected maximum velocity.
-    pub c0: Option<f64>,
-    /// Damped settling, in acoustic crossings of the depth.
-    pub settle: f64,
-    /// Free-surface detection and plunge check every this many steps.
-    pub detect_every: usize,
-}
-
-impl Default for Model {
-    fn default() -> Self {
-        let d = TwoDtConfig::default();
-        Model {
-            ratio: d.coarse_ratio,
-            width_over_beam: d.width_over_beam,
-            depth_over_draft: d.depth_over_draft,
-            c0: d.c0,
-            settle: d.settle_crossings,
-            detect_every: d.detect_every,
-        }
-    }
-}
-
-/// Where each case stops.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Stop {
-    /// `"plunge"` (shortly after it), `"transom"`, or an x/L value.
-    pub until: toml::Value,
-    /// x/L at which a case looking for the plunge gives up (default 0.5: every plunge of Tables 10.1 and 10.2
-    /// is before x/L = 0.27).
-    pub give_up_at: f64,
-    /// x/L run on after the plunge (default 0.01).
-    pub after_plunge: f64,
-}
-
-impl Default for Stop {
-    fn default() -> Self {
-        Stop {
-            until: toml::Value::String("plunge".into()),
-            give_up_at: 0.5,
-            after_plunge: TwoDtConfig::default().after_plunge,
-        }
-    }
-}
-
-/// Which outputs each case writes besides its metrics, series, η table and plunge snapshots.
-#[derive(Clone, Debug, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct Outputs {
-    pub vtk: bool,
-    pub frames: bool,
-    /// x/L between outputs (η profiles for the wave-pattern map, frames).
-    pub output_dx: f64,
-}
-
-impl Default for Outputs {
-    fn default() -> Self {
-        Outputs {
-            vtk: false,
-            frames: false,
-            output_dx: TwoDtConfig::default().output_dx,
-        }
-    }
-}
-
 /// One resolved case of a study: everything needed to run it and to recognise it when resumed.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct CaseSpec {
     /// 1-based position in the study.
     pub index: usize,
-    pub fr: f64,
-    pub dx: f64,
-    pub ratio: f64,
-    pub width_over_beam: f64,
-    pub depth_over_draft: f64,
-    pub c0: Option<f64>,
-    pub settle: f64,
-    pub detect_every: usize,
-    /// `plunge`, `transom` or an x/L value, as text.
-    pub until: String,
-    pub give_up_at: f64,
-    pub after_plunge: f64,
-    pub vtk: bool,
-    pub frames: bool,
-    pub output_dx: f64,
+    /// The whole configuration of the case: the defaults, the study's `[config]`, the case's `[case.N]`,
+    /// its Froude number and its spacing.
+    pub config: TwoDtConfig,
 }
 
 impl CaseSpec {
     /// Folder name of the case inside the study's output folder.
     pub fn dir_name(&self) -> String {
-        format!("{:02}-fr{:.3}", self.index, self.fr)
+        format!("{:02}-fr{:.3}", self.index, self.fr())
     }
 
-    /// The 2D+t configuration of the case. A plunge search stops at `give_up_at` if nothing plunged.
-    pub fn config(&self) -> TwoDtConfig {
-        let until = match self.until.as_str() {
-            "plunge" => Until::Plunge,
-            "transom" => Until::Transom,
-            v => Until::X(v.parse().unwrap_or(self.give_up_at)),
-        };
-        TwoDtConfig {
-            fr: self.fr,
-            dx: Some(self.dx),
-            coarse_ratio: self.ratio,
-            width_over_beam: self.width_over_beam,
-            depth_over_draft: self.depth_over_draft,
-            until,
-            give_up_at: (until == Until::Plunge).then_some(self.give_up_at),
-            after_plunge: self.after_plunge,
-            c0: self.c0,
-            settle_crossings: self.settle,
-            detect_every: self.detect_every,
-            output_dx: self.output_dx,
-            ..Default::default()
-        }
+    /// The case's Froude number.
+    pub fn fr(&self) -> f64 {
+        self.config.fr
+    }
+
+    /// The case's fine spacing dx/L (always resolved in a study).
+    pub fn dx(&self) -> f64 {
+        self.config.dx.unwrap_or(f64::NAN)
     }
 }
 
@@ -282,72 +185,66 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             .map(|&fr| estimated_hpj_over_d(fr) * draft / level.h_over_dx())
             .collect()
     };
-    let m = &s.model;
-    let until = match &s.stop.until {
-        toml::Value::String(v) if v == "plunge" || v == "transom" => v.clone(),
-        toml::Value::Float(x) if *x > 0.0 => x.to_string(),
-        toml::Value::Integer(x) if *x > 0 => x.to_string(),
-        _ => return err("stop.until", "\"plunge\", \"transom\" or an x/L value > 0"),
-    };
-    // A study's cases start at the stem, so its stop points lie beyond it (the 2D+t run alone may start
-    // before the stem and accepts any number).
-    if !(s.stop.give_up_at > 0.0 && s.stop.give_up_at.is_finite()) {
-        return err("stop.give_up_at", "an x/L value > 0");
-    }
-    let cases: Vec<CaseSpec> = s
-        .froude
-        .iter()
-        .zip(dxs)
-        .enumerate()
-        .map(|(k, (&fr, dx))| CaseSpec {
-            index: k + 1,
-            fr,
-            dx,
-            ratio: m.ratio,
-            width_over_beam: m.width_over_beam,
-            depth_over_draft: m.depth_over_draft,
-            c0: m.c0,
-            settle: m.settle,
-            detect_every: m.detect_every,
-            until: until.clone(),
-            give_up_at: s.stop.give_up_at,
-            after_plunge: s.stop.after_plunge,
-            vtk: s.outputs.vtk,
-            frames: s.outputs.frames,
-            output_dx: s.outputs.output_dx,
-        })
-        .collect();
-    // The values themselves are checked by the 2D+t run's own rules (one list, `TwoDtConfig::check`), each
-    // error told with the study's field name; the give-up point has had the study's stricter rule above.
-    for case in &cases {
-        case.config().check().map_err(|e| {
-            (
-                study_field(e.option).to_string(),
-                format!("{}, got {}", e.expected, e.got),
-            )
-        })?;
-    }
-    Ok(cases)
-}
-
-/// The study file's field for an option of the 2D+t configuration.
-fn study_field(option: ConfigOption) -> &'static str {
-    match option {
-        ConfigOption::Fr => "froude",
-        ConfigOption::CoarseRatio => "model.ratio",
-        ConfigOption::WidthOverBeam => "model.width_over_beam",
-        ConfigOption::DepthOverDraft => "model.depth_over_draft",
-        ConfigOption::C0 => "model.c0",
-        ConfigOption::Settle => "model.settle",
-        ConfigOption::DetectEvery => "model.detect_every",
-        ConfigOption::Until => "stop.until",
-        ConfigOption::GiveUpAt => "stop.give_up_at",
-        ConfigOption::AfterPlunge => "stop.after_plunge",
-        ConfigOption::OutputDx => "outputs.output_dx",
-        // Options a study file does not set; their defaults pass.
-        o
-        @ (ConfigOption::Cfl | ConfigOption::Layers | ConfigOption::PlungeDepth | ConfigOption::PlungeCirculation) => {
-            o.describe()
+    let base = TwoDtConfig::default()
+        .with_overrides(&s.config)
+        .map_err(|e| ("config".to_string(), e))?;
+    for (key, field) in [("fr", "froude"), ("dx", "resolution")] {
+        if s.config.contains_key(key) {
+            return Err((format!("config.{key}"), format!("no `{key}` here: `{field}` sets it")));
         }
     }
+    let mut overrides: Vec<Option<&toml::Table>> = vec![None; s.froude.len()];
+    for (k, table) in &s.case {
+        let index = k.parse::<usize>().ok().filter(|i| (1..=s.froude.len()).contains(i));
+        let Some(index) = index else {
+            return Err((
+                format!("case.{k}"),
+                format!("a case number from 1 to {} (one per Froude number)", s.froude.len()),
+            ));
+        };
+        for key in ["fr", "dx"] {
+            if table.contains_key(key) {
+                return Err((
+                    format!("case.{k}.{key}"),
+                    "no `fr` or `dx` here: `froude` and `[resolution]` set them".into(),
+                ));
+            }
+        }
+        overrides[index - 1] = Some(table);
+    }
+    let mut cases = Vec::with_capacity(s.froude.len());
+    for (k, (&fr, dx)) in s.froude.iter().zip(dxs).enumerate() {
+        let own = overrides[k];
+        let mut config = match own {
+            Some(t) => base.with_overrides(t).map_err(|e| (format!("case.{}", k + 1), e))?,
+            None => base.clone(),
+        };
+        config.fr = fr;
+        config.dx = Some(dx);
+        // The values are checked by the 2D+t run's own rules (one list, `TwoDtConfig::check`), each error told
+        // with the study's field name.
+        let field = |option: ConfigOption| match option {
+            ConfigOption::Fr => "froude".to_string(),
+            o if own.is_some_and(|t| t.contains_key(o.key())) => format!("case.{}.{}", k + 1, o.key()),
+            o => format!("config.{}", o.key()),
+        };
+        config
+            .check()
+            .map_err(|e| (field(e.option), format!("{}, got {}", e.expected, e.got)))?;
+        // A study's cases start at the stem, so its stop points lie beyond it (a 2D+t run alone may start
+        // before the stem and accepts any number).
+        if let Until::X(x) = config.until {
+            if x <= 0.0 {
+                return Err((
+                    field(ConfigOption::Until),
+                    format!("\"plunge\", \"transom\" or an x/L value > 0, got {x}"),
+                ));
+            }
+        }
+        if let Some(x) = config.give_up_at.filter(|&x| x <= 0.0) {
+            return Err((field(ConfigOption::GiveUpAt), format!("an x/L value > 0, got {x}")));
+        }
+        cases.push(CaseSpec { index: k + 1, config });
+    }
+    Ok(cases)
 }

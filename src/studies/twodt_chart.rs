@@ -22,8 +22,8 @@ pub fn apply_twodt_variant(cfg: &mut TwoDtConfig, name: &str) -> anyhow::Result<
         "delta-sph" => cfg.diffusion = DensityDiffusion::DeltaSph,
         "molteni" => cfg.diffusion = DensityDiffusion::MolteniColagrossi,
         "wcsph" => cfg.diffusion = DensityDiffusion::None,
-        "table" => cfg.kernel_table = true,
-        "exact-kernel" => cfg.kernel_table = false,
+        "table" => cfg.exact_kernel = false,
+        "exact-kernel" => cfg.exact_kernel = true,
         other => {
             let parsed = other.split_once('=').and_then(|(k, v)| {
                 v.parse::<f64>()
@@ -146,12 +146,12 @@ mod tests {
     #[test]
     fn twodt_variants_set_their_field_and_bad_names_are_refused() {
         let mut c = TwoDtConfig::default();
-        assert!(c.kernel_table, "the tabulated kernel gradient is the default");
+        assert!(!c.exact_kernel, "the tabulated kernel gradient is the default");
         for v in ["wcsph", "exact-kernel", "cfl=2.5", "ratio=1.5"] {
             apply_twodt_variant(&mut c, v).unwrap();
         }
         assert_eq!(c.diffusion, DensityDiffusion::None);
-        assert!(!c.kernel_table);
+        assert!(c.exact_kernel);
         assert_eq!(c.cfl, Some(2.5));
         assert_eq!(c.coarse_ratio, 1.5);
         for bad in ["wendland", "ratio=0.5", "cfl=-1", "cfl=x", "speed=2"] {

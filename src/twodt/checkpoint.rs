@@ -113,9 +113,15 @@ struct LevelSetHeader {
     surface_level: f64,
 }
 
-/// What identifies the configuration of a run: a checkpoint of another configuration is not resumed.
+/// What identifies the configuration of a run: a checkpoint of another configuration is not resumed (the
+/// output-only options may differ, [`TwoDtConfig::physics`](super::config::TwoDtConfig::physics)).
 pub fn fingerprint(cfg: &super::scene::TwoDtConfig, scene: &Scene) -> String {
-    format!("{} | {cfg:?} | {:?}", scene.profile.hull.meta.name, scene.geom)
+    format!(
+        "{} | {:?} | {:?}",
+        scene.profile.hull.meta.name,
+        cfg.physics(),
+        scene.geom
+    )
 }
 
 /// Saves the scene's particles and the loop state to `path` (atomically); `wall`/`cpu`: seconds so far.

@@ -2,6 +2,7 @@
 //! is a deforming wall in the δ-SPH solver. Orchestrates geometry, solver and analysis.
 
 pub mod checkpoint;
+pub mod config;
 pub mod lattice;
 pub mod profile;
 

@@ -20,10 +20,8 @@ type V2 = Vector2<f64>;
 pub struct TwoDtOptions {
     pub out_dir: PathBuf,
     pub progress: bool,
-    pub vtk: bool,
+    /// PNG plots at the plunge (the frames and VTK series are the configuration's `frames` and `vtk`).
     pub plots: bool,
-    /// PNG frame of the bow region (particles by initial depth) at every output.
-    pub frames: bool,
     /// Where to attach the progress bar (a study's bars); `None`: a bar of its own.
     pub multi: Option<indicatif::MultiProgress>,
     /// Label in front of the progress bar.
@@ -33,14 +31,12 @@ pub struct TwoDtOptions {
 }
 
 impl TwoDtOptions {
-    /// Results and tables only, into `out_dir`: no progress bar, VTK, plots or frames (tests, charts).
+    /// Results and tables only, into `out_dir`: no progress bar or plots (tests, charts).
     pub fn quiet(out_dir: PathBuf) -> Self {
         TwoDtOptions {
             out_dir,
             progress: false,
-            vtk: false,
             plots: false,
-            frames: false,
             multi: None,
             label: String::new(),
             checkpoint: Default::default(),
@@ -349,7 +345,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                     &scene,
                     &s,
                     scene.sim.time,
-                    (cfg.plunge_depth, cfg.plunge_circulation),
+                    (cfg.plunge_depth, cfg.plunge_circulation.threshold()),
                     &mut p.closure_watch,
                     searching,
                 );
@@ -395,7 +391,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                         p.crest = p.crest.max(z / g.draft);
                     }
                 }
-                if opts.frames {
+                if cfg.frames {
                     let path = opts.out_dir.join(format!("frame_{:04}.png", p.series.rows.len()));
                     depth_plot(
                         &scene,
@@ -405,7 +401,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
                         &format!("x/L = {x:.4}"),
                     )?;
                 }
-                if opts.vtk {
+                if cfg.vtk {
                     let name = format!("frame_{:05}.vtp", p.vtk_frames.len());
                     write_frame(&scene, &s, &opts.out_dir.join(&name))?;
                     p.vtk_frames.push((x, name));
@@ -468,7 +464,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
     bow_wall.write(&opts.out_dir.join("snapshot_wall.csv"))?;
     p.series.write(&opts.out_dir.join("series.csv"))?;
     p.eta_table.write(&opts.out_dir.join("eta.csv"))?;
-    if opts.vtk {
+    if cfg.vtk {
         vtk::write_pvd(&opts.out_dir.join("series.pvd"), &p.vtk_frames)?;
     }
     write_atomic(

@@ -23,21 +23,9 @@ pub struct ConvergeArgs {
     /// twodt: hull offsets file.
     #[arg(long, default_value = "hulls/athena.csv")]
     pub hull: PathBuf,
-    /// twodt: ship Froude number U/sqrt(gL).
-    #[arg(long, default_value_t = 0.5)]
-    pub fr: f64,
     /// twodt: fine spacings dx/L, coarse to fine (the thesis's Athena study: 2.7e-4,1.9e-4,1.35e-4).
     #[arg(long, value_delimiter = ',', default_values_t = vec![3e-3, 2e-3, 1.333e-3])]
     pub dx: Vec<f64>,
-    /// twodt: where each run stops: plunge (plus a margin), transom, or an x/L value.
-    #[arg(long, default_value = "plunge")]
-    pub until: String,
-    /// twodt: x/L at which a run that has not plunged gives up.
-    #[arg(long)]
-    pub give_up_at: Option<f64>,
-    /// twodt: free-surface detection and plunge check every N steps.
-    #[arg(long, default_value_t = 10)]
-    pub detect_every: usize,
     /// twodt: gather finished `bowwave twodt` runs (their folders, coarse to fine, comma separated)
     /// instead of running the ladder.
     #[arg(long, value_delimiter = ',')]
@@ -49,6 +37,9 @@ pub struct ConvergeArgs {
     /// twodt: stop after this many minutes of wall time with a checkpoint (exit status 3).
     #[arg(long)]
     pub wall_limit: Option<f64>,
+    /// The options of each 2D+t run (as `bowwave twodt`'s).
+    #[command(flatten, next_help_heading = "2D+t options (converge twodt)")]
+    pub config: bowwave::twodt::config::TwoDtConfig,
     /// Output folder for converge.csv and, for twodt, one folder per spacing (default out/converge-CASE).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -65,14 +56,9 @@ impl ConvergeArgs {
         } else if self.case == "twodt" {
             let offsets = HullOffsets::read(&self.hull)?;
             let surface = Arc::new(HullSurface::new(&offsets));
-            let fr = self.fr;
-            let base = bowwave::twodt::scene::TwoDtConfig {
-                fr,
-                until: self.until.parse().map_err(anyhow::Error::msg)?,
-                give_up_at: self.give_up_at,
-                detect_every: self.detect_every,
-                ..Default::default()
-            };
+            let base = self.config;
+            base.check()?;
+            let fr = base.fr;
             let out = self
                 .out
                 .unwrap_or_else(|| PathBuf::from("out").join(format!("converge-twodt-{}-fr{fr}", offsets.meta.name)));

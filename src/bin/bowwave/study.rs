@@ -101,7 +101,12 @@ fn print_dry_run(study: &studies::study_file::Study) -> anyhow::Result<()> {
     for e in &est {
         println!(
             "{:4}  {:<6}  {:.3e}  {:9}  {:10.0}  {:13.0}",
-            e.spec.index, e.spec.fr, e.spec.dx, e.particles, e.steps, e.seconds
+            e.spec.index,
+            e.spec.fr(),
+            e.spec.dx(),
+            e.particles,
+            e.steps,
+            e.seconds
         );
     }
     println!(
@@ -146,7 +151,7 @@ fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> an
                     "its pace so far (packing included: an older checkpoint)".to_string()
                 };
                 // A plunge search stops at its give-up point only if nothing plunges: the hours are an upper bound.
-                let bound = if c.spec.until == "plunge" && !s.plunged {
+                let bound = if c.spec.config.until == bowwave::twodt::config::Until::Plunge && !s.plunged {
                     " (its give-up point: a plunge ends it sooner)"
                 } else {
                     ""
@@ -178,7 +183,7 @@ fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> an
             CaseState::OtherConfiguration => "finished with another configuration: runs again".into(),
             CaseState::NotStarted => "not started".into(),
         };
-        println!("{:4}  {:<6}  {:.3e}  {state}", c.spec.index, c.spec.fr, c.spec.dx);
+        println!("{:4}  {:<6}  {:.3e}  {state}", c.spec.index, c.spec.fr(), c.spec.dx());
     }
     Ok(())
 }

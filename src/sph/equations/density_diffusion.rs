@@ -18,6 +18,30 @@ pub enum DensityDiffusion {
     DeltaSph,
 }
 
+impl std::str::FromStr for DensityDiffusion {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "none" => Ok(Self::None),
+            "molteni-colagrossi" => Ok(Self::MolteniColagrossi),
+            "delta-sph" => Ok(Self::DeltaSph),
+            v => Err(format!(
+                "expected `delta-sph`, `molteni-colagrossi` or `none`, got `{v}`"
+            )),
+        }
+    }
+}
+
+impl std::fmt::Display for DensityDiffusion {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::None => "none",
+            Self::MolteniColagrossi => "molteni-colagrossi",
+            Self::DeltaSph => "delta-sph",
+        })
+    }
+}
+
 impl DensityDiffusion {
     /// Whether the renormalised density gradient must be computed.
     pub fn needs_gradient(self) -> bool {
