@@ -5,7 +5,7 @@ use bowwave::cases::{
     self,
     run::{run, RunOptions, RunResult},
 };
-use bowwave::studies::charts::apply_variant;
+use bowwave::methods::charts::apply_variant;
 
 fn dam_break(variant: &str) -> RunResult {
     let mut c = cases::load("dam-break").unwrap();

@@ -7,7 +7,7 @@ use bowwave::cases::{
     run::{run, RunOptions, RunResult},
     CaseFile,
 };
-use bowwave::studies::charts::apply_variant;
+use bowwave::methods::charts::apply_variant;
 
 fn run_variant(case: &str, variant: &str, res: f64, end: f64) -> RunResult {
     run_variant_with(case, variant, res, end, false)
@@ -111,7 +111,7 @@ fn without_viscosity_or_diffusion_the_dam_break_goes_noisy() {
             None => r.sim.pressure_noise() / (1000.0 * 9.81 * 0.6),
         }
     };
-    let limit = bowwave::studies::charts::NOISE_LIMIT;
+    let limit = bowwave::methods::charts::NOISE_LIMIT;
     let w0 = noise(&["wcsph", "alpha=0"]);
     let w2 = noise(&["wcsph", "alpha=0.02"]);
     let d0 = noise(&["delta-sph", "alpha=0"]);
@@ -146,7 +146,7 @@ fn twodt_wcsph_is_noisier_than_delta_sph() {
             ..Default::default()
         };
         let opts = run::TwoDtOptions::quiet(std::env::temp_dir().join(format!("bowwave-2dt-{name}")));
-        run::run(hull.clone(), &cfg, &opts).unwrap()
+        run::run(hull.clone(), &cfg, &opts).unwrap().ran().unwrap()
     };
     let d = result(DensityDiffusion::DeltaSph, "delta");
     let w = result(DensityDiffusion::None, "wcsph");

@@ -139,7 +139,7 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
         ..serial_options(&out)
     };
     assert_eq!(
-        runner::run_cases(&study, &opts).unwrap(),
+        runner::run_cases(&study, &opts).unwrap().finished,
         1,
         "--case 2 runs case 2 only"
     );
@@ -149,11 +149,15 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
         ..opts.clone()
     };
     assert_eq!(
-        runner::run_cases(&study, &all).unwrap(),
+        runner::run_cases(&study, &all).unwrap().finished,
         1,
         "only the unfinished case 1 runs"
     );
-    assert_eq!(runner::run_cases(&study, &all).unwrap(), 0, "nothing left to run");
+    assert_eq!(
+        runner::run_cases(&study, &all).unwrap().finished,
+        0,
+        "nothing left to run"
+    );
     assert_eq!(collect_all(&study, &out).unwrap(), 2);
     let jets = std::fs::read_to_string(out.join("jets.csv")).unwrap();
     assert_eq!(jets.lines().count(), 3, "header and one row per Froude number:\n{jets}");
@@ -246,7 +250,11 @@ fn one_froude_number_at_two_spacings_compares_both_and_claims_no_trend() {
     );
     let out = dir.join("out");
     let opts = serial_options(&out);
-    assert_eq!(runner::run_cases(&study, &opts).unwrap(), 2, "two cases, two folders");
+    assert_eq!(
+        runner::run_cases(&study, &opts).unwrap().finished,
+        2,
+        "two cases, two folders"
+    );
     assert_eq!(collect_all(&study, &out).unwrap(), 2);
     let comparison = std::fs::read_to_string(out.join("comparison.csv")).unwrap();
     assert_eq!(
@@ -314,16 +322,21 @@ fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
         ..serial_options(out)
     };
     let (through, stopped) = (dir.join("through"), dir.join("stopped"));
-    assert_eq!(runner::run_cases(&study, &options(&through, None)).unwrap(), 1);
+    assert_eq!(runner::run_cases(&study, &options(&through, None)).unwrap().finished, 1);
     collect_all(&study, &through).unwrap();
     let steps = runner::collect_finished(&study, &through)[0].result.steps;
-    let e = runner::run_cases(&study, &options(&stopped, Some(steps / 2))).expect_err("stopped part-way");
-    assert!(format!("{e:#}").contains("stopped at x/L"), "{e:#}");
+    let ran = runner::run_cases(&study, &options(&stopped, Some(steps / 2))).unwrap();
+    assert_eq!((ran.finished, ran.halted.len()), (0, 1), "stopped part-way");
+    assert!(
+        ran.halted[0].to_string().contains("stopped at x/L"),
+        "{}",
+        ran.halted[0]
+    );
     assert!(
         runner::collect_finished(&study, &stopped).is_empty(),
         "a stopped case is not finished"
     );
-    assert_eq!(runner::run_cases(&study, &options(&stopped, None)).unwrap(), 1);
+    assert_eq!(runner::run_cases(&study, &options(&stopped, None)).unwrap().finished, 1);
     collect_all(&study, &stopped).unwrap();
     let without_timings = |out: &Path| {
         let text = std::fs::read_to_string(out.join("jets.csv")).unwrap();
@@ -369,9 +382,10 @@ fn status_tells_finished_stopped_and_unstarted_cases_apart() {
         },
         ..serial_options(&out)
     };
-    assert_eq!(runner::run_cases(&study, &only(1, None)).unwrap(), 1);
+    assert_eq!(runner::run_cases(&study, &only(1, None)).unwrap().finished, 1);
     let steps = runner::collect_finished(&study, &out)[0].result.steps;
-    runner::run_cases(&study, &only(2, Some(steps / 2))).expect_err("case 2 stopped part-way");
+    let ran = runner::run_cases(&study, &only(2, Some(steps / 2))).unwrap();
+    assert_eq!(ran.halted.len(), 1, "case 2 stopped part-way");
     let states = status(&study, &out).unwrap();
     assert_eq!(states.len(), 3);
     match &states[0].state {

@@ -121,7 +121,7 @@ fn three_dimensional_dam_break_gives_identical_bits_on_one_and_two_threads() {
 /// 0.03–0.08 H, docs/method.md).
 #[test]
 fn three_dimensional_slab_front_follows_the_two_dimensional_one_within_its_resolution_error() {
-    use bowwave::studies::slab::{compare, SlabOptions};
+    use bowwave::compare3d::slab::{compare, SlabOptions};
     for ghosts in [GhostKind::Fixed, GhostKind::Images] {
         let opts = |res: f64, width_cells: usize| SlabOptions {
             res,
@@ -153,7 +153,7 @@ fn three_dimensional_slab_front_follows_the_two_dimensional_one_within_its_resol
 
 #[test]
 fn slab_comparison_refuses_bad_options_with_what_it_expected() {
-    use bowwave::studies::slab::{compare, SlabOptions};
+    use bowwave::compare3d::slab::{compare, SlabOptions};
     let good = SlabOptions {
         res: 10.0,
         width_cells: 4,
@@ -189,7 +189,7 @@ fn slab_comparison_refuses_bad_options_with_what_it_expected() {
 /// stop (the blow-up path itself cannot be reached cheaply: no small case blows up).
 #[test]
 fn slab_table_keeps_the_two_dimensional_samples_past_a_stopped_three_dimensional_run() {
-    use bowwave::studies::slab::{RunHistory, SlabComparison, SlabOptions};
+    use bowwave::compare3d::slab::{RunHistory, SlabComparison, SlabOptions};
     let run = |n: usize| RunHistory {
         t_star: (0..n).map(|k| k as f64 * 0.1).collect(),
         front: vec![2.0; n],

@@ -1,13 +1,19 @@
 //! The 2D+t scene at coarse resolution: the wedge check against a rigid wedge (and Wagner, printed), and a
 //! short Athena run for conservation, settling and the calm far field.
 
+use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::twodt::{
-    run::{run, TwoDtOptions},
+    run::{TwoDtOptions, TwoDtResult},
     scene::{TwoDtConfig, Until},
     wedge::{compare, print, WedgeSpec},
 };
 use std::sync::Arc;
+
+/// A 2D+t run that is not expected to halt: its result.
+fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> anyhow::Result<TwoDtResult> {
+    bowwave::twodt::run::run(hull, cfg, opts)?.ran()
+}
 
 /// A hull of 30° wedge sections whose apex sinks linearly in x is, in 2D+t, a rigid wedge entering at
 /// constant speed: at the last sample (penetration 0.03 L = 20 dx) the pile-up height and the force of the
@@ -316,7 +322,7 @@ fn settling_energy_is_measured_before_the_ship_starts() {
 /// report and the packed particles come from the checkpoint, not from a second packing.
 #[test]
 fn resumed_run_gives_the_same_bits_as_an_uninterrupted_one() {
-    use bowwave::twodt::checkpoint::{CheckpointPolicy, Halted, FILE};
+    use bowwave::twodt::checkpoint::{CheckpointPolicy, FILE};
     let cfg = TwoDtConfig {
         dx: Some(4e-3),
         detect_every: 3,
@@ -335,8 +341,10 @@ fn resumed_run_gives_the_same_bits_as_an_uninterrupted_one() {
         },
         ..quiet_options(&dir_b, false)
     };
-    let e = run(athena(), &cfg, &stop).expect_err("the run stops at the asked step");
-    let h = e.downcast_ref::<Halted>().expect("a Halted error");
+    let h = match bowwave::twodt::run::run(athena(), &cfg, &stop).unwrap() {
+        Ended::Halted(h) => h,
+        Ended::Ran(_) => panic!("the run stops at the asked step"),
+    };
     // It stops at the first plunge check (every `detect_every` steps) at or after the asked step.
     assert!(
         h.steps >= halt && h.steps < halt + cfg.detect_every as u64,
@@ -375,7 +383,7 @@ fn resumed_run_gives_the_same_bits_as_an_uninterrupted_one() {
 /// running them again, and `--runs` gathers the same folders into the same table (coarse to fine only).
 #[test]
 fn convergence_ladder_reuses_finished_runs_and_gathers_run_folders() {
-    use bowwave::studies::twodt_convergence::{converge_finished, converge_twodt, run_dir};
+    use bowwave::methods::twodt_convergence::{converge_finished, converge_twodt, run_dir};
     use bowwave::twodt::checkpoint::CheckpointPolicy;
     let base = TwoDtConfig {
         output_dx: 0.01,
@@ -384,13 +392,19 @@ fn convergence_ladder_reuses_finished_runs_and_gathers_run_folders() {
     let out = std::env::temp_dir().join(format!("bowwave-ladder-{}", std::process::id()));
     let dxs = [5e-3, 4e-3];
     let policy = CheckpointPolicy::default();
-    let first = converge_twodt(athena(), &base, &dxs, &out, &policy, false).unwrap();
-    let again = converge_twodt(athena(), &base, &dxs, &out, &policy, false).unwrap();
+    let first = converge_twodt(athena(), &base, &dxs, &out, &policy, false)
+        .unwrap()
+        .ran()
+        .unwrap();
+    let again = converge_twodt(athena(), &base, &dxs, &out, &policy, false)
+        .unwrap()
+        .ran()
+        .unwrap();
     assert_eq!(
         first.wall_seconds, again.wall_seconds,
         "the second call reuses the recorded runs"
     );
-    let crest = |c: &bowwave::convergence::Convergence| {
+    let crest = |c: &bowwave::methods::convergence::Convergence| {
         let q = c.quantities.iter().find(|q| q.name.starts_with("crest")).unwrap();
         q.values.iter().map(|v| v.0).collect::<Vec<_>>()
     };
@@ -434,5 +448,47 @@ fn plunge_instant_found_between_checks_is_the_one_a_check_every_step_finds() {
     assert_eq!(pf.x_plunge_over_l.to_bits(), ps.x_plunge_over_l.to_bits());
     assert_eq!(pf.gamma_over_ud.to_bits(), ps.gamma_over_ud.to_bits());
     assert_eq!(fast.steps, slow.steps);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The CLI as a batch job sees it (stderr a file, not a terminal): progress as plain lines, a run halted at
+/// its wall-time limit exits with status 3 and a checkpoint, and the same command then goes on to the end
+/// (status 0). Before, the progress bars hid themselves in a log, so a job's log said nothing until the end.
+#[test]
+fn batch_run_logs_plain_progress_and_halts_with_status_3() {
+    let dir = std::env::temp_dir().join(format!("bowwave-batch-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let run = |extra: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_bowwave"))
+            .args([
+                "--threads",
+                "1",
+                "twodt",
+                "--fr",
+                "0.64",
+                "--dx",
+                "4e-3",
+                "--until",
+                "0.02",
+            ])
+            .args(["--output-dx", "0.01", "--out"])
+            .arg(&dir)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let halted = run(&["--wall-limit", "0.0001"]);
+    let log = String::from_utf8_lossy(&halted.stderr);
+    assert_eq!(halted.status.code(), Some(3), "{log}");
+    assert!(
+        log.contains(": started") && log.contains("halted (stopped at x/L"),
+        "{log}"
+    );
+    assert!(dir.join(bowwave::twodt::checkpoint::FILE).exists());
+    let resumed = run(&[]);
+    let log = String::from_utf8_lossy(&resumed.stderr);
+    assert_eq!(resumed.status.code(), Some(0), "{log}");
+    assert!(log.contains(": finished at x/L = 0.02"), "{log}");
+    assert!(!dir.join(bowwave::twodt::checkpoint::FILE).exists());
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -4,6 +4,8 @@
 
 use super::case_file::CaseFile;
 use super::setup;
+use crate::driver::progress::{Progress, Status};
+use crate::driver::{drive, Flow, Observer, Outcome, Watch};
 use crate::io::{csv_table::Table, vtk};
 use crate::sph::{
     diagnostics,
@@ -176,6 +178,99 @@ pub fn write_snapshot(sim: &Simulation<2>, path: &Path) -> std::io::Result<()> {
 /// the second.
 pub const ENERGY_GROWTH_LIMIT: f64 = 1e-3;
 
+/// Samples the time series at the case's interval (and at the start and the end), watches for the first
+/// cavity closure, and stops a run with fixed walls whose mechanical energy grows
+/// ([`ENERGY_GROWTH_LIMIT`]).
+struct Sampling<'a> {
+    case: &'a CaseFile,
+    sampler: Sampler,
+    end: f64,
+    /// Time of the next sample; `None` before the first (the initial state).
+    next: Option<f64>,
+    series: Table,
+    check_energy: bool,
+    wall_lines: Vec<Vec<nalgebra::Vector2<f64>>>,
+    cavity_watch: super::cavity_probe::CavityWatch,
+    cavity: Option<super::cavity_probe::CavityClosure>,
+    dx: f64,
+}
+
+impl Observer<Simulation<2>> for Sampling<'_> {
+    fn observe(&mut self, sim: &mut Simulation<2>) -> anyhow::Result<Flow> {
+        let every = self.case.output.series_every;
+        let due = match self.next {
+            None => true,
+            Some(next) => sim.time >= next - 1e-12 || sim.time >= self.end - 1e-12,
+        };
+        if !due {
+            return Ok(Flow::Step);
+        }
+        let first = self.next.is_none();
+        let row = sample(self.case, sim, &self.sampler);
+        let gain = row[DE_COLUMN];
+        self.series.push(row);
+        let mut next = self.next.unwrap_or(0.0);
+        if first {
+            next = every;
+        } else {
+            if let Some(spec) = &self.case.probes.cavity {
+                if self.cavity.is_none() && sim.time >= spec.after {
+                    self.cavity = self.cavity_watch.check(sim, self.dx, &self.wall_lines);
+                }
+            }
+            if self.check_energy && gain > ENERGY_GROWTH_LIMIT {
+                return Ok(Flow::Fail(BlowUp {
+                    reason: BlowUpReason::EnergyGrowth {
+                        gain,
+                        limit: ENERGY_GROWTH_LIMIT,
+                    },
+                    time: sim.time,
+                    step: sim.steps,
+                    particle: None,
+                }));
+            }
+            while next <= sim.time + 1e-12 {
+                next += every;
+            }
+        }
+        self.next = Some(next);
+        Ok(Flow::Step)
+    }
+}
+
+/// VTK snapshots of the fluid at the case's interval (and of the initial state), with the `.pvd` index
+/// rewritten after each, into `dir` when set.
+struct Snapshots<'a> {
+    case: &'a CaseFile,
+    dir: Option<PathBuf>,
+    next: Option<f64>,
+    pvd: Vec<(f64, String)>,
+}
+
+impl Observer<Simulation<2>> for Snapshots<'_> {
+    fn observe(&mut self, sim: &mut Simulation<2>) -> anyhow::Result<Flow> {
+        let Some(dir) = &self.dir else {
+            return Ok(Flow::Step);
+        };
+        let every = self.case.output.vtk_every;
+        if self.next.is_some_and(|next| sim.time < next - 1e-12) {
+            return Ok(Flow::Step);
+        }
+        let name = format!("{}_{:05}.vtp", self.case.name, self.pvd.len());
+        write_snapshot(sim, &dir.join(&name))?;
+        self.pvd.push((sim.time, name));
+        vtk::write_pvd(&dir.join(format!("{}.pvd", self.case.name)), &self.pvd)?;
+        let mut next = self.next.unwrap_or(every);
+        if self.next.is_some() {
+            while next <= sim.time + 1e-12 {
+                next += every;
+            }
+        }
+        self.next = Some(next);
+        Ok(Flow::Step)
+    }
+}
+
 /// Runs a case.
 pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     if let Some(end) = opts.end_time {
@@ -204,98 +299,58 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
         },
     };
     let end = opts.end_time.unwrap_or(case.output.end_time);
-    let mut series = Table::new(columns(case, sim.boundaries.len()));
-    let mut files = vec![];
     let vtk_dir = opts.out_dir.as_ref().map(|d| d.join("vtk"));
-    let mut pvd: Vec<(f64, String)> = vec![];
     let want_vtk = opts.vtk && case.output.vtk_every > 0.0 && vtk_dir.is_some();
-    let snapshot = |sim: &Simulation<2>, pvd: &mut Vec<(f64, String)>| -> anyhow::Result<()> {
-        if let Some(dir) = &vtk_dir {
-            let name = format!("{}_{:05}.vtp", case.name, pvd.len());
-            write_snapshot(sim, &dir.join(&name))?;
-            pvd.push((sim.time, name));
-            vtk::write_pvd(&dir.join(format!("{}.pvd", case.name)), pvd)?;
-        }
-        Ok(())
-    };
-
-    series.push(sample(case, &mut sim, &sampler));
-    if want_vtk {
-        snapshot(&sim, &mut pvd)?;
-    }
-    let mut next_sample = case.output.series_every;
-    let mut next_vtk = case.output.vtk_every;
-    let bar = if opts.progress {
-        let b = indicatif::ProgressBar::new(1000);
-        b.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{spinner} [{elapsed_precise}] {bar:40} {percent:>3}% {msg} ETA {eta}",
-            )
-            .expect("valid template"),
-        );
-        Some(b)
-    } else {
-        None
-    };
     // Walls that move do work on the fluid, so energy may rise; every body force here is conservative.
     let check_energy = !opts.allow_energy_growth && case.walls.iter().all(|w| w.velocity.is_none());
-    let wall_lines: Vec<Vec<nalgebra::Vector2<f64>>> = case
-        .walls
-        .iter()
-        .map(|w| w.points.iter().map(|p| nalgebra::Vector2::new(p[0], p[1])).collect())
-        .collect();
-    let mut cavity_watch = super::cavity_probe::CavityWatch::default();
-    let mut cavity = None;
+    let mut sampling = Sampling {
+        case,
+        sampler,
+        end,
+        next: None,
+        series: Table::new(columns(case, sim.boundaries.len())),
+        check_energy,
+        wall_lines: case
+            .walls
+            .iter()
+            .map(|w| w.points.iter().map(|p| nalgebra::Vector2::new(p[0], p[1])).collect())
+            .collect(),
+        cavity_watch: Default::default(),
+        cavity: None,
+        dx,
+    };
+    let mut snapshots = Snapshots {
+        case,
+        dir: vtk_dir.filter(|_| want_vtk),
+        next: None,
+        pvd: vec![],
+    };
+    let t_scale = (l / g).sqrt();
+    let label = format!("{} ", case.name);
+    let mut progress = Progress::new(&label, opts.progress, None, |sim: &Simulation<2>| Status {
+        fraction: sim.time / end,
+        text: format!("t* = {:.3}", sim.time / t_scale),
+        steps: sim.steps,
+    });
+    let mut until_end = Watch(|sim: &mut Simulation<2>| {
+        Ok(if sim.time >= end - 1e-12 {
+            Flow::Stop
+        } else {
+            Flow::Step
+        })
+    });
     let start = Instant::now();
-    let mut blowup = None;
-    while sim.time < end - 1e-12 {
-        match sim.step() {
-            Ok(_) => {}
-            Err(e) => {
-                blowup = Some(e);
-                break;
-            }
-        }
-        if sim.time >= next_sample - 1e-12 || sim.time >= end - 1e-12 {
-            let row = sample(case, &mut sim, &sampler);
-            let gain = row[DE_COLUMN];
-            series.push(row);
-            if let Some(spec) = &case.probes.cavity {
-                if cavity.is_none() && sim.time >= spec.after {
-                    cavity = cavity_watch.check(&mut sim, dx, &wall_lines);
-                }
-            }
-            if check_energy && gain > ENERGY_GROWTH_LIMIT {
-                blowup = Some(BlowUp {
-                    reason: BlowUpReason::EnergyGrowth {
-                        gain,
-                        limit: ENERGY_GROWTH_LIMIT,
-                    },
-                    time: sim.time,
-                    step: sim.steps,
-                    particle: None,
-                });
-                break;
-            }
-            while next_sample <= sim.time + 1e-12 {
-                next_sample += case.output.series_every;
-            }
-        }
-        if want_vtk && sim.time >= next_vtk - 1e-12 {
-            snapshot(&sim, &mut pvd)?;
-            while next_vtk <= sim.time + 1e-12 {
-                next_vtk += case.output.vtk_every;
-            }
-        }
-        if let Some(b) = &bar {
-            b.set_position((1000.0 * sim.time / end).min(1000.0) as u64);
-            b.set_message(format!("t* = {:.3}, step {}", sim.time / sampler.t_scale, sim.steps));
-        }
-    }
+    let outcome = drive(
+        &mut sim,
+        &mut [&mut sampling, &mut snapshots, &mut progress, &mut until_end],
+    )?;
+    let blowup = match outcome {
+        Outcome::BlewUp(b) => Some(b),
+        Outcome::Finished | Outcome::Halted(_) => None,
+    };
+    let (series, cavity) = (sampling.series, sampling.cavity);
+    let mut files = vec![];
     let wall_seconds = start.elapsed().as_secs_f64();
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
     if let Some(dir) = &opts.out_dir {
         let p = dir.join(format!("{}_series.csv", case.name));
         series.write(&p)?;
@@ -305,7 +360,7 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
             write_snapshot(&sim, &p)?;
             files.push(p);
         }
-        if want_vtk {
+        if snapshots.dir.is_some() {
             files.push(dir.join("vtk").join(format!("{}.pvd", case.name)));
         }
     }

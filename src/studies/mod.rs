@@ -2,16 +2,12 @@
 //! gathered into tables and a report against the published jets (`collect`) and figures (`figures`);
 //! `status` tells where each case stands. Studies orchestrate; they hold no physics.
 
-pub mod charts;
 pub mod collect;
 pub mod figures;
 pub mod lock;
 pub mod runner;
-pub mod slab;
 pub mod status;
 pub mod study_file;
-pub mod twodt_chart;
-pub mod twodt_convergence;
 
 use std::path::Path;
 

@@ -4,6 +4,7 @@
 //! per running case, and a manifest (version, commit, resolved configuration, per-case timings).
 
 use super::study_file::{CaseSpec, Study};
+use crate::driver::{Ended, Halted};
 use crate::io::atomic::write_atomic;
 use crate::twodt::run::{run, TwoDtOptions, TwoDtResult};
 use serde::{Deserialize, Serialize};
@@ -87,7 +88,7 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
             let g = &scene.geom;
             let h = scene.sim.kernel.h;
             let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * g.c0, 1.0);
-            let t = scene.profile.t_start + (g.x_end - g.x0) / g.fr;
+            let t = scene.profile.t_at(g.x_end);
             let particles = scene.sim.n_fluid();
             let steps = (t / dt).ceil();
             Ok(Estimate {
@@ -184,9 +185,18 @@ pub(crate) fn write_manifest_locked(study: &Study, out: &Path) -> anyhow::Result
     Ok(())
 }
 
+/// What [`run_cases`] did.
+#[derive(Debug, Default)]
+pub struct Ran {
+    /// Cases that ran to their end (a blow-up included: its record says so).
+    pub finished: usize,
+    /// Cases stopped at the wall-time limit with a checkpoint: the same command goes on from them.
+    pub halted: Vec<Halted>,
+}
+
 /// Runs the cases that are not finished yet (or all with `force`, or only `case`), then rewrites the
-/// manifest. Returns how many cases ran.
-pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
+/// manifest.
+pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<Ran> {
     let todo: Vec<CaseSpec> = study
         .cases
         .iter()
@@ -212,7 +222,7 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
         .map_err(|e| anyhow::anyhow!("cannot create output directory {}: {e}", opts.out_dir.display()))?;
     write_manifest(study, &opts.out_dir)?;
     if todo.is_empty() {
-        return Ok(0);
+        return Ok(Ran::default());
     }
     let hull = surface(study)?;
     let multi = indicatif::MultiProgress::new();
@@ -228,7 +238,7 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
     let threads_each = (opts.threads / jobs).max(1);
     let queue = Mutex::new(todo.into_iter().rev().collect::<Vec<_>>());
     let errors: Mutex<Vec<String>> = Mutex::new(vec![]);
-    let ran = Mutex::new(0usize);
+    let ran = Mutex::new(Ran::default());
     std::thread::scope(|scope| {
         for _ in 0..jobs {
             scope.spawn(|| {
@@ -245,7 +255,8 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
                     };
                     let r = pool.install(|| run_one(&hull, study, &spec, opts, &multi));
                     match r {
-                        Ok(()) => *ran.lock().expect("lock") += 1,
+                        Ok(None) => ran.lock().expect("lock").finished += 1,
+                        Ok(Some(h)) => ran.lock().expect("lock").halted.push(h),
                         Err(e) => {
                             errors
                                 .lock()
@@ -267,14 +278,14 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<usize> {
     Ok(ran.into_inner().expect("lock"))
 }
 
-/// Runs one case into its folder and records it.
+/// Runs one case into its folder and records it; `Some` when it halted with a checkpoint.
 fn run_one(
     hull: &Arc<crate::geometry::surface::HullSurface>,
     study: &Study,
     spec: &CaseSpec,
     opts: &StudyOptions,
     multi: &indicatif::MultiProgress,
-) -> anyhow::Result<()> {
+) -> anyhow::Result<Option<Halted>> {
     let dir = case_dir(&opts.out_dir, spec);
     // A stale record must not survive a re-run that is interrupted.
     let _ = std::fs::remove_file(dir.join("case.json"));
@@ -289,12 +300,15 @@ fn run_one(
             ..opts.checkpoint.clone()
         },
     };
-    let result = run(hull.clone(), &spec.config, &topts)?;
+    let result = match run(hull.clone(), &spec.config, &topts)? {
+        Ended::Ran(r) => r,
+        Ended::Halted(h) => return Ok(Some(h)),
+    };
     let rec = CaseRecord {
         spec: spec.clone(),
         result,
         git_commit: Some(env!("BOWWAVE_GIT_COMMIT").to_string()),
     };
     write_atomic(&dir.join("case.json"), serde_json::to_string_pretty(&rec)?.as_bytes())?;
-    Ok(())
+    Ok(None)
 }

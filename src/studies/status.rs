@@ -5,7 +5,7 @@
 
 use super::runner::{case_dir, finished, surface, CaseRecord};
 use super::study_file::{CaseSpec, Study};
-use crate::twodt::run::Progress;
+use crate::twodt::run::CheckpointProgress;
 use std::path::Path;
 
 /// The state of one case in an output folder.
@@ -15,7 +15,7 @@ pub enum CaseState {
     Finished(Box<CaseRecord>),
     /// Stopped part-way with a checkpoint (of this configuration or, if `same_configuration` is false, of an
     /// earlier one that a run would overwrite).
-    InProgress(Progress),
+    InProgress(CheckpointProgress),
     /// A finished record exists but of another configuration: the case runs again.
     OtherConfiguration,
     NotStarted,
@@ -65,7 +65,7 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
 /// packing and settling before it left out when the checkpoint records them (early in a run of 665 000
 /// particles the packing counted as progress made the estimate about 3 times too long); `None` before the
 /// section has moved.
-pub fn remaining_seconds(p: &Progress) -> Option<f64> {
+pub fn remaining_seconds(p: &CheckpointProgress) -> Option<f64> {
     let done = p.x_over_l - p.x_start;
     let s = &p.saved;
     let passage = (s.wall_seconds - s.setup_seconds).max(0.0);

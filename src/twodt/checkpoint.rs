@@ -4,7 +4,7 @@
 //! as an uninterrupted one (test `resumed_run_gives_the_same_bits_as_an_uninterrupted_one`): the time step
 //! carries no state besides the particles, the clock and the step count.
 
-use super::run::PlungeMetrics;
+use super::result::PlungeMetrics;
 use super::scene::Scene;
 use crate::analysis::cavity::ClosureWatch;
 use crate::analysis::level_set::LevelSet;
@@ -44,7 +44,8 @@ pub struct Halted {
     pub checkpoint: PathBuf,
 }
 
-/// What the passage loop of [`super::run::run`] carries from one iteration to the next.
+/// What the passage loop (the observers of `twodt::passage`) carries from one iteration to the next: what a
+/// checkpoint saves besides the particles.
 #[derive(Clone, Debug)]
 pub struct Passage {
     /// Step count when the ship started (after the settling); detection runs every `detect_every` from it.

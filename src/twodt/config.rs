@@ -381,7 +381,7 @@ pub struct ConfigError {
 
 impl TwoDtConfig {
     /// Checks the values that need no hull (the spacing and the tank's size are checked by
-    /// [`super::scene::build`], against the hull's draft and beam): each error names the option and what
+    /// the scene's `build`, against the hull's draft and beam): each error names the option and what
     /// was expected. The CLI, study files and the library all pass through here.
     pub fn check(&self) -> Result<(), ConfigError> {
         use ConfigOption as O;

@@ -4,9 +4,12 @@
 pub mod checkpoint;
 pub mod config;
 pub mod lattice;
+mod passage;
+pub mod pictures;
 pub mod profile;
 
 pub mod report;
+pub mod result;
 pub mod run;
 pub mod scene;
 pub mod wedge;

@@ -12,7 +12,8 @@ use std::sync::Arc;
 
 type V2 = Vector2<f64>;
 
-/// What the profile needs to know (units of L, time in √(L/g)).
+/// What the profile needs to know (units of L, time in √(L/g)). It is the one owner of the ship's speed U
+/// and of the time ↔ x mapping of eq. (10.2) ([`Self::x_at`], [`Self::t_at`]).
 #[derive(Clone)]
 pub struct SectionProfile {
     pub hull: Arc<HullSurface>,
@@ -32,9 +33,14 @@ pub struct SectionProfile {
 }
 
 impl SectionProfile {
-    /// x/L at time t, eq. (10.2).
+    /// x/L at time t, eq. (10.2): x = U (t − t_start) + x0 once the ship has started, x0 before.
     pub fn x_at(&self, t: f64) -> f64 {
         self.u * (t - self.t_start).max(0.0) + self.x0
+    }
+
+    /// The time at which the section reaches x/L = `x` (the inverse of [`Self::x_at`] for x ≥ x0).
+    pub fn t_at(&self, x: f64) -> f64 {
+        self.t_start + (x - self.x0) / self.u
     }
 
     /// The wall at time t.

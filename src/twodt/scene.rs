@@ -54,7 +54,6 @@ pub fn settle_time(cfg: &TwoDtConfig, depth: f64, c0: f64) -> f64 {
 /// Everything fixed once the case is resolved.
 #[derive(Clone, Debug)]
 pub struct SceneGeometry {
-    pub fr: f64,
     pub draft: f64,
     pub beam: f64,
     pub width: f64,
@@ -162,7 +161,6 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         cfg.depth_over_draft
     );
     let geom = SceneGeometry {
-        fr: cfg.fr,
         draft,
         beam,
         width,

@@ -7,10 +7,12 @@
 //! F = (π³/4) ρ V³ t cot²β for the whole wedge (half of it in our half domain).
 
 use super::scene::{build, TwoDtConfig, Until};
+use crate::driver::{drive, Flow, Observer, Outcome};
 use crate::geometry::hull_file::{HullMeta, HullOffsets, HullStatus, Station};
 use crate::geometry::surface::HullSurface;
 use crate::sph::deforming_wall::{DeformingWall, Profile};
 use crate::sph::polyline_wall::{FluidSide, VertexMotion};
+use crate::sph::solver::Simulation;
 use nalgebra::Vector2;
 use std::sync::Arc;
 
@@ -129,9 +131,10 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         ..Default::default()
     };
     let mut scene = build(hull, &cfg)?;
-    let v = spec.fr * spec.slope;
+    let v = scene.profile.u * spec.slope;
     let t_start = scene.profile.t_start;
-    let t_touch = t_start + X_TOUCH / spec.fr;
+    // The stem is at x = 0, the section's start (x0).
+    let t_touch = scene.profile.t_at(X_TOUCH);
     if rigid {
         let s = *spec;
         let (z_cut, z_top, tb) = (scene.geom.z_cut, scene.geom.z_top, spec.tan_beta());
@@ -158,56 +161,93 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         ));
     }
     scene.settle()?;
-    let mut out = vec![];
     let mut targets: Vec<f64> = at.to_vec();
     targets.sort_by(f64::total_cmp);
-    // The force is integrated in time (trapezoids, every step after the touch) and the coefficient taken
-    // from the impulse: ∫F dt = C ρ V³ t²/2 for F = C ρ V³ t, which filters the SPH pressure noise.
-    let mut impulse = 0.0;
-    let mut last: Option<(f64, f64)> = None;
     let tb = spec.tan_beta();
-    let dir = V2::new(1.0, tb).normalize();
-    let n = V2::new(tb, -1.0).normalize();
-    for pen in targets {
-        let t_target = t_touch + pen / v;
-        // Pressure moments along the side in the similarity variable s/(V t), summed over the last quarter
-        // of the interval: a single instant is too noisy for the centre of pressure.
-        let (mut m0, mut m1) = (0.0, 0.0);
-        while scene.sim.time < t_target {
-            scene
-                .sim
-                .step()
-                .map_err(|b| anyhow::anyhow!("wedge run blew up: {b}"))?;
-            if scene.sim.time > t_touch {
-                scene.sim.refresh();
-                let f = scene.sim.boundary_forces()[1].y;
-                let t = scene.sim.time - t_touch;
-                let (t0, f0) = last.unwrap_or((0.0, 0.0));
-                impulse += 0.5 * (f + f0) * (t - t0);
-                last = Some((t, f));
+    let mut sampler = WedgeSampler {
+        targets: targets.into_iter().rev().collect(),
+        v,
+        t_touch,
+        dx: spec.dx,
+        dir: V2::new(1.0, tb).normalize(),
+        n: V2::new(tb, -1.0).normalize(),
+        stepped: false,
+        impulse: 0.0,
+        last: None,
+        moments: (0.0, 0.0),
+        out: vec![],
+    };
+    match drive(&mut scene.sim, &mut [&mut sampler])? {
+        Outcome::BlewUp(b) => anyhow::bail!("wedge run blew up: {b}"),
+        Outcome::Finished | Outcome::Halted(_) => Ok(sampler.out),
+    }
+}
+
+/// The wedge's samples at the asked penetrations. The force is integrated in time (trapezoids, every step
+/// after the touch) and the coefficient taken from the impulse: ∫F dt = C ρ V³ t²/2 for F = C ρ V³ t, which
+/// filters the SPH pressure noise. The pressure moments along the side in the similarity variable s/(V t)
+/// are summed over the last quarter of each interval: a single instant is too noisy for the centre of
+/// pressure.
+struct WedgeSampler {
+    /// Penetrations still to sample, the next one last.
+    targets: Vec<f64>,
+    v: f64,
+    t_touch: f64,
+    dx: f64,
+    dir: V2,
+    n: V2,
+    stepped: bool,
+    impulse: f64,
+    last: Option<(f64, f64)>,
+    moments: (f64, f64),
+    out: Vec<WedgeSample>,
+}
+
+impl Observer<Simulation<2>> for WedgeSampler {
+    fn observe(&mut self, sim: &mut Simulation<2>) -> anyhow::Result<Flow> {
+        let v = self.v;
+        if let Some(&pen) = self.targets.last() {
+            if std::mem::replace(&mut self.stepped, true) && sim.time > self.t_touch {
+                sim.refresh();
+                let f = sim.boundary_forces()[1].y;
+                let t = sim.time - self.t_touch;
+                let (t0, f0) = self.last.unwrap_or((0.0, 0.0));
+                self.impulse += 0.5 * (f + f0) * (t - t0);
+                self.last = Some((t, f));
                 if t > 0.75 * pen / v {
-                    let (a, b) = pressure_moments(&scene.sim, spec.dx, v * t, &dir, &n);
-                    m0 += a;
-                    m1 += b;
+                    let (a, b) = pressure_moments(sim, self.dx, v * t, &self.dir, &self.n);
+                    self.moments.0 += a;
+                    self.moments.1 += b;
                 }
             }
         }
-        let t = scene.sim.time - t_touch;
-        // The centre of pressure s_cp gives the Wagner-equivalent wetted length c = (π/2) s_cp (for
-        // p ∝ 1/√(c² − s²)), and the pile-up height c sinβ above the apex.
-        let c_over_vt = std::f64::consts::FRAC_PI_2 * m1 / m0.max(1e-300);
-        out.push(WedgeSample {
-            penetration: v * t,
-            pileup_over_vt: c_over_vt * dir.y,
-            force_coefficient: 2.0 * impulse / (v * v * v * t * t),
-        });
+        while let Some(&pen) = self.targets.last() {
+            if sim.time < self.t_touch + pen / v {
+                break;
+            }
+            self.targets.pop();
+            let t = sim.time - self.t_touch;
+            let (m0, m1) = std::mem::take(&mut self.moments);
+            // The centre of pressure s_cp gives the Wagner-equivalent wetted length c = (π/2) s_cp (for
+            // p ∝ 1/√(c² − s²)), and the pile-up height c sinβ above the apex.
+            let c_over_vt = std::f64::consts::FRAC_PI_2 * m1 / m0.max(1e-300);
+            self.out.push(WedgeSample {
+                penetration: v * t,
+                pileup_over_vt: c_over_vt * self.dir.y,
+                force_coefficient: 2.0 * self.impulse / (v * v * v * t * t),
+            });
+        }
+        Ok(if self.targets.is_empty() {
+            Flow::Stop
+        } else {
+            Flow::Step
+        })
     }
-    Ok(out)
 }
 
 /// Zeroth and first moments (∫p dσ, ∫p σ dσ with σ = s/(V t)) of the pressure along the wedge side, one
 /// spacing into the fluid, from the apex up to s = 3 V t / sinβ; `vt` is the penetration.
-fn pressure_moments(sim: &crate::sph::solver::Simulation<2>, dx: f64, vt: f64, dir: &V2, n: &V2) -> (f64, f64) {
+fn pressure_moments(sim: &Simulation<2>, dx: f64, vt: f64, dir: &V2, n: &V2) -> (f64, f64) {
     let ds = 0.25 * dx;
     let (mut m0, mut m1) = (0.0, 0.0);
     let steps = (3.0 * vt / (dir.y * ds)) as usize + 1;

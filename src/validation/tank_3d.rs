@@ -5,9 +5,11 @@
 
 use super::Check;
 use crate::cases::box_tank::BoxTank;
+use crate::driver::progress::{Progress, Status};
+use crate::driver::{drive, Flow, Outcome, Watch};
 use crate::sph::diagnostics::energies;
 use crate::sph::polyline_wall::GhostKind;
-use crate::sph::solver::BlowUp;
+use crate::sph::solver::{BlowUp, Simulation};
 use nalgebra::Vector3;
 
 const G: f64 = 9.81;
@@ -67,37 +69,28 @@ pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Resu
         .map_err(|e| anyhow::anyhow!("tank-3d at H/dx {res}: {e}"))?;
     let ts = (H / G).sqrt();
     let m = sim.fluid.total_mass();
-    let bar = progress.then(|| {
-        let b = indicatif::ProgressBar::new((END_T_STAR * 100.0) as u64);
-        b.set_style(
-            indicatif::ProgressStyle::with_template(
-                "tank-3d {bar:40} t* {msg} [{elapsed_precise} / eta {eta_precise}]",
-            )
-            .expect("valid template"),
-        );
-        b
-    });
     let (mut force, mut bottom, mut samples) = (0.0, 0.0, 0.0);
-    while sim.time < END_T_STAR * ts {
-        if let Err(b) = sim.step() {
-            if let Some(bar) = &bar {
-                bar.finish_and_clear();
-            }
-            return Ok(Err(b));
-        }
+    // Step first, then sample: the state after each step is observed (the initial one is before the window).
+    let mut averages = Watch(|sim: &mut Simulation<3>| {
         if sim.time > AVERAGE_FROM * ts && sim.steps.is_multiple_of(5) {
             sim.refresh();
             force -= sim.boundary_forces()[0].z / (m * G);
             bottom += sim.sensor_pressure_at(&Vector3::new(0.5 * tank.tank.x, 0.5 * tank.tank.y, 0.0)) / (RHO0 * G);
             samples += 1.0;
         }
-        if let Some(b) = &bar {
-            b.set_position((sim.time / ts * 100.0) as u64);
-            b.set_message(format!("{:.2}", sim.time / ts));
-        }
-    }
-    if let Some(b) = bar {
-        b.finish_and_clear();
+        Ok(if sim.time >= END_T_STAR * ts {
+            Flow::Stop
+        } else {
+            Flow::Step
+        })
+    });
+    let mut bar = Progress::new("tank-3d ", progress, None, |sim: &Simulation<3>| Status {
+        fraction: sim.time / ts / END_T_STAR,
+        text: format!("t* = {:.2}", sim.time / ts),
+        steps: sim.steps,
+    });
+    if let Outcome::BlewUp(b) = drive(&mut sim, &mut [&mut averages, &mut bar])? {
+        return Ok(Err(b));
     }
     sim.refresh();
     let layer_mean = |z0: f64, z1: f64| {

@@ -1,7 +1,7 @@
 //! `bench` (throughput of the dam break in particle-steps per second) and its hidden one-configuration
 //! worker `bench-one`, which `bench` runs in a child process per configuration.
 
-use bowwave::bench;
+use bowwave::methods::bench;
 use clap::Args;
 
 #[derive(Args)]

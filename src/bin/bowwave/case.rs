@@ -37,8 +37,8 @@ pub struct RunArgs {
 }
 
 impl RunArgs {
-    /// Runs the case and exits with the run's status (non-zero after a blow-up).
-    pub fn run(self) -> anyhow::Result<()> {
+    /// Runs the case; its exit status is non-zero after a blow-up.
+    pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let mut case = cases::load(&self.case)?;
         if let Some(kind) = self.ghosts {
             case.set_ghosts(kind.into());
@@ -53,7 +53,7 @@ impl RunArgs {
             ..Default::default()
         };
         let code = validation::run_and_report(&case, &out, opts)?;
-        std::process::exit(code);
+        Ok(std::process::ExitCode::from(u8::try_from(code).unwrap_or(1)))
     }
 }
 
@@ -74,15 +74,19 @@ pub struct ValidateArgs {
 }
 
 impl ValidateArgs {
-    /// Prints the validation table; exits with status 1 when a tolerance is missed.
-    pub fn run(self) -> anyhow::Result<()> {
+    /// Prints the validation table; exit status 1 when a tolerance is missed.
+    pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let ok = validation::validate_cli(
             self.case.as_deref(),
             self.res,
             self.out.as_deref(),
             self.ghosts.map(Into::into),
         )?;
-        std::process::exit(if ok { 0 } else { 1 });
+        Ok(if ok {
+            std::process::ExitCode::SUCCESS
+        } else {
+            std::process::ExitCode::FAILURE
+        })
     }
 }
 

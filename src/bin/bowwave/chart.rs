@@ -100,7 +100,7 @@ impl ChartKind {
                 quantity,
                 out,
             } => {
-                use bowwave::studies::charts;
+                use bowwave::methods::charts;
                 let c = bowwave::cases::load(&case)?;
                 let (label, points) = charts::speed_accuracy(&c, &variants, &res, end, quantity.as_deref())?;
                 let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-{}", c.name)));
@@ -131,7 +131,7 @@ impl ChartKind {
                 at,
                 out,
             } => {
-                use bowwave::studies::twodt_chart;
+                use bowwave::methods::twodt_chart;
                 let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
                 let name = offsets.meta.name.clone();
                 let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
@@ -163,7 +163,7 @@ impl ChartKind {
                 println!("wrote {}", out.display());
             }
             ChartKind::Replot { dir, quantity } => {
-                use bowwave::studies::charts;
+                use bowwave::methods::charts;
                 let (case, label, points) =
                     charts::read_speed_accuracy(&dir.join("speed_accuracy.csv"), quantity.as_deref())?;
                 for f in charts::write_speed_accuracy(&dir, &case, &label, &points)? {
@@ -178,7 +178,7 @@ impl ChartKind {
                 end,
                 out,
             } => {
-                use bowwave::studies::charts;
+                use bowwave::methods::charts;
                 anyhow::ensure!(
                     !rows.is_empty() && !cols.is_empty(),
                     "--rows and --cols: expected variant lists"

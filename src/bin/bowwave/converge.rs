@@ -1,9 +1,10 @@
 //! `converge`: a case at several resolutions, with the observed order and a Richardson estimate.
 
-use crate::options::{checkpoint_policy, exit_if_halted};
+use crate::options::{checkpoint_policy, halted};
 use anyhow::Context;
+use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
-use bowwave::studies::twodt_convergence;
+use bowwave::methods::twodt_convergence;
 use clap::Args;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -46,8 +47,9 @@ pub struct ConvergeArgs {
 }
 
 impl ConvergeArgs {
-    /// Prints the convergence table and writes converge.csv.
-    pub fn run(self) -> anyhow::Result<()> {
+    /// Prints the convergence table and writes converge.csv; exit status 3 when a 2D+t ladder halted with a
+    /// checkpoint.
+    pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let (conv, out) = if self.case == "twodt" && !self.runs.is_empty() {
             let out = self
                 .out
@@ -63,19 +65,21 @@ impl ConvergeArgs {
                 .out
                 .unwrap_or_else(|| PathBuf::from("out").join(format!("converge-twodt-{}-fr{fr}", offsets.meta.name)));
             let policy = checkpoint_policy(self.checkpoint_every, self.wall_limit, true)?;
-            let conv = twodt_convergence::converge_twodt(surface, &base, &self.dx, &out, &policy, true);
-            (exit_if_halted(conv)?, out)
+            match twodt_convergence::converge_twodt(surface, &base, &self.dx, &out, &policy, true)? {
+                Ended::Ran(conv) => (conv, out),
+                Ended::Halted(h) => return Ok(halted(&h)),
+            }
         } else {
             let c = bowwave::cases::load(&self.case)?;
             let out = self
                 .out
                 .unwrap_or_else(|| PathBuf::from("out").join(format!("converge-{}", c.name)));
-            (bowwave::convergence::converge(&c, &self.res, self.end)?, out)
+            (bowwave::methods::convergence::converge(&c, &self.res, self.end)?, out)
         };
         print!("{}", conv.report());
         std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
         bowwave::io::atomic::write_atomic(&out.join("converge.csv"), conv.csv().as_bytes())?;
         println!("table in {}", out.join("converge.csv").display());
-        Ok(())
+        Ok(std::process::ExitCode::SUCCESS)
     }
 }

@@ -14,6 +14,7 @@ mod twodt;
 
 use anyhow::Context;
 use clap::{Parser, Subcommand};
+use std::process::ExitCode;
 
 #[derive(Parser)]
 #[command(name = "bowwave", version, about = "δ-SPH simulation of breaking bow waves (2D+t), with its validation cases", long_about = None)]
@@ -71,14 +72,19 @@ enum Command {
     Cases(case::CasesArgs),
 }
 
-fn main() {
-    if let Err(e) = run() {
-        eprintln!("error: {e:#}");
-        std::process::exit(1);
+/// Exit status: 0 done, 1 an error or a missed tolerance, 2 a run that blew up (its outputs kept), 3 a run
+/// halted with a checkpoint (run the same command again to go on).
+fn main() -> ExitCode {
+    match run() {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::FAILURE
+        }
     }
 }
 
-fn run() -> anyhow::Result<()> {
+fn run() -> anyhow::Result<ExitCode> {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
     let cli = Cli::parse();
     if let Some(n) = cli.threads {
@@ -87,19 +93,20 @@ fn run() -> anyhow::Result<()> {
             .build_global()
             .context("setting the thread count")?;
     }
+    let done = |r: anyhow::Result<()>| r.map(|()| ExitCode::SUCCESS);
     match cli.command {
         Command::Run(a) => a.run(),
         Command::Validate(a) => a.run(),
         Command::Twodt(a) => a.run(),
         Command::Converge(a) => a.run(),
-        Command::Chart { kind } => kind.run(),
+        Command::Chart { kind } => done(kind.run()),
         Command::Study(a) => a.run(),
-        Command::Wedge(a) => a.run(),
-        Command::Bench(a) => a.run(),
-        Command::Slab(a) => a.run(),
-        Command::Hull { action } => action.run(),
-        Command::BenchOne(a) => a.run(),
-        Command::Cases(a) => a.run(),
+        Command::Wedge(a) => done(a.run()),
+        Command::Bench(a) => done(a.run()),
+        Command::Slab(a) => done(a.run()),
+        Command::Hull { action } => done(action.run()),
+        Command::BenchOne(a) => done(a.run()),
+        Command::Cases(a) => done(a.run()),
     }
 }
 

@@ -39,14 +39,12 @@ pub fn checkpoint_policy(
     })
 }
 
-/// A 2D+t run stopped on purpose with its state saved ([`bowwave::twodt::checkpoint::Halted`]) is not a
-/// failure: says where it stopped and exits with status 3, which tells a batch script to submit it again.
-pub fn exit_if_halted<T>(r: anyhow::Result<T>) -> anyhow::Result<T> {
-    if let Err(e) = &r {
-        if let Some(h) = e.downcast_ref::<bowwave::twodt::checkpoint::Halted>() {
-            eprintln!("{h}");
-            std::process::exit(3);
-        }
-    }
-    r
+/// Exit status of a run that blew up (its outputs and diagnosis kept).
+pub const BLEW_UP: u8 = 2;
+
+/// A run stopped on purpose with its state saved is not a failure: says where it stopped and gives exit
+/// status 3, which tells a batch script to submit it again.
+pub fn halted(h: &bowwave::driver::Halted) -> std::process::ExitCode {
+    eprintln!("{h}");
+    std::process::ExitCode::from(3)
 }

@@ -1,7 +1,7 @@
 //! `slab`: the dam break in 2D and as a 3D slab at the same spacing (the 3D comparison mode's first case).
 
 use crate::options::GhostsArg;
-use bowwave::studies::slab::{compare, SlabOptions};
+use bowwave::compare3d::slab::{compare, SlabOptions};
 use clap::Args;
 use std::path::PathBuf;
 
@@ -53,8 +53,8 @@ impl SlabArgs {
         c.table()
             .write(&csv)
             .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", csv.display()))?;
-        bowwave::studies::slab::write_plots(&c, &out)?;
-        println!("{}", bowwave::studies::slab::summary(&c));
+        bowwave::compare3d::slab::write_plots(&c, &out)?;
+        println!("{}", bowwave::compare3d::slab::summary(&c));
         println!(
             "written: {} (slab.csv, slab_front.png, slab_pressure.png)",
             out.display()

@@ -50,19 +50,21 @@ pub struct StudyArgs {
 
 impl StudyArgs {
     /// Runs the unfinished cases (or only `--case N`), then gathers every finished one and prints the report.
-    pub fn run(self) -> anyhow::Result<()> {
+    /// Exit status 3 when a case halted with a checkpoint (run the same command again to go on).
+    pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let study = studies::study_file::Study::read(&self.file)?;
         let out = self
             .out
             .unwrap_or_else(|| PathBuf::from("out").join(format!("study-{}", study.spec.name)));
         if self.dry_run {
             print_dry_run(&study)?;
-            return Ok(());
+            return Ok(std::process::ExitCode::SUCCESS);
         }
         if self.status {
             print_status(&study, &out)?;
-            return Ok(());
+            return Ok(std::process::ExitCode::SUCCESS);
         }
+        let mut halted_cases = vec![];
         if !self.collect {
             let opts = studies::runner::StudyOptions {
                 out_dir: out.clone(),
@@ -75,7 +77,8 @@ impl StudyArgs {
                 checkpoint: checkpoint_policy(self.checkpoint_every, self.wall_limit, true)?,
             };
             let ran = studies::runner::run_cases(&study, &opts)?;
-            println!("{ran} case(s) run");
+            println!("{} case(s) run", ran.finished);
+            halted_cases = ran.halted;
         }
         let n = studies::collect_all(&study, &out)?;
         println!(
@@ -84,7 +87,15 @@ impl StudyArgs {
             out.display()
         );
         print!("{}", std::fs::read_to_string(out.join("report.md")).unwrap_or_default());
-        Ok(())
+        Ok(match halted_cases.first() {
+            Some(first) => {
+                for h in &halted_cases[1..] {
+                    eprintln!("{h}");
+                }
+                crate::options::halted(first)
+            }
+            None => std::process::ExitCode::SUCCESS,
+        })
     }
 }
 

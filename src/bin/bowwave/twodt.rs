@@ -1,7 +1,8 @@
 //! `twodt` (one hull at one Froude number, from the stem to the plunge) and `wedge` (the 2D+t machinery
 //! against a rigid wedge entry and Wagner theory).
 
-use crate::options::{checkpoint_policy, exit_if_halted};
+use crate::options::{checkpoint_policy, halted, BLEW_UP};
+use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::twodt;
 use clap::Args;
@@ -40,9 +41,8 @@ pub struct TwodtArgs {
 }
 
 impl TwodtArgs {
-    /// Runs the case and prints its metrics; exits with status 2 after a blow-up, 3 when halted with a
-    /// checkpoint.
-    pub fn run(self) -> anyhow::Result<()> {
+    /// Runs the case and prints its metrics; exit status 2 after a blow-up, 3 when halted with a checkpoint.
+    pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let offsets = HullOffsets::read(&self.hull)?;
         let surface = Arc::new(HullSurface::new(&offsets));
         let cfg = twodt::config::TwoDtConfig {
@@ -59,15 +59,19 @@ impl TwodtArgs {
             progress: !self.quiet,
             plots: true,
             multi: None,
-            label: String::new(),
+            label: format!("{} Fr {fr} ", offsets.meta.name),
             checkpoint: checkpoint_policy(self.checkpoint_every, self.wall_limit, !self.fresh)?,
         };
-        let r = exit_if_halted(twodt::run::run(surface, &cfg, &opts))?;
+        let r = match twodt::run::run(surface, &cfg, &opts)? {
+            Ended::Ran(r) => r,
+            Ended::Halted(h) => return Ok(halted(&h)),
+        };
         twodt::report::print(&r, &out);
-        if r.blowup.is_some() {
-            std::process::exit(2);
-        }
-        Ok(())
+        Ok(if r.blowup.is_some() {
+            std::process::ExitCode::from(BLEW_UP)
+        } else {
+            std::process::ExitCode::SUCCESS
+        })
     }
 }
 

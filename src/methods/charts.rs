@@ -116,7 +116,7 @@ pub fn speed_accuracy(
         let mut c = case.clone();
         apply_variant(&mut c, v)?;
         for &r in res {
-            let cpu0 = crate::bench::cpu_seconds();
+            let cpu0 = crate::process_usage::cpu_seconds();
             let result = run(
                 &c,
                 &RunOptions {
@@ -125,7 +125,7 @@ pub fn speed_accuracy(
                     ..Default::default()
                 },
             )?;
-            let cpu = crate::bench::cpu_seconds() - cpu0;
+            let cpu = crate::process_usage::cpu_seconds() - cpu0;
             let (name, error) = match &result.blowup {
                 None => error_of(&result, quantity)?,
                 Some(_) => (String::new(), f64::NAN),

@@ -30,37 +30,10 @@ pub struct BenchResult {
     pub share_update: f64,
 }
 
-/// Process CPU time (user + system) from /proc/self/stat, in s; 0 where unavailable.
-pub fn cpu_seconds() -> f64 {
-    let Ok(s) = std::fs::read_to_string("/proc/self/stat") else {
-        return 0.0;
-    };
-    let rest = s.rsplit(')').next().unwrap_or("");
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let tick = 100.0; // USER_HZ, 100 on Linux
-    let ut: f64 = f.get(11).and_then(|v| v.parse().ok()).unwrap_or(0.0);
-    let st: f64 = f.get(12).and_then(|v| v.parse().ok()).unwrap_or(0.0);
-    (ut + st) / tick
-}
-
-/// Peak resident set size of this process (bytes), from /proc/self/status (Linux); 0 elsewhere.
-pub fn peak_rss_bytes() -> u64 {
-    std::fs::read_to_string("/proc/self/status")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("VmHWM:"))
-                .and_then(|l| l.split_whitespace().nth(1))
-                .and_then(|v| v.parse::<u64>().ok())
-        })
-        .map(|kb| kb * 1024)
-        .unwrap_or(0)
-}
-
 /// The benchmark's case: the dam break with a method variant, and without its cavity probe.
 pub fn bench_case(variant: &str) -> anyhow::Result<cases::CaseFile> {
     let mut case = cases::load("dam-break")?;
-    crate::studies::charts::apply_variant(&mut case, variant)?;
+    crate::methods::charts::apply_variant(&mut case, variant)?;
     // The solver is measured, not the validation's post-processing: the cavity probe (a level set of the
     // whole flow at every series sample from t√(g/H) = 4.85 on, to find the plunging wave's cavity) cost
     // 2 % of the wall time and 40 % more peak memory to t√(g/H) = 6 at H/dx = 100 (BENCHMARKS.md, session 14).
@@ -85,7 +58,7 @@ pub fn bench_one(res: f64, end_star: f64, variant: &str) -> anyhow::Result<Bench
     }
     let t = r.sim.timings;
     let total = (t.neighbour_search + t.ghost_mirroring + t.density_gradient + t.main_loop + t.update).max(1e-12);
-    let rss = peak_rss_bytes();
+    let rss = crate::process_usage::peak_rss_bytes();
     Ok(BenchResult {
         variant: variant.to_string(),
         res,

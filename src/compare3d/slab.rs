@@ -1,25 +1,72 @@
 //! The first case of the 3D comparison mode: the dam break of issue #2 run twice at the same spacing, in 2D
 //! and as a 3D slab between free-slip side walls, so that the 3D engine is checked against the 2D one on a
 //! flow that is 2D, and the cost of the third dimension is measured. Both runs use
-//! [`crate::cases::box_tank::BoxTank`] (the 2D box tank has the polyline tank's ghosts), the dam-break
-//! parameters of `cases/dam-break.toml` (H = 0.6 m, column 2H × H, c0 = 20 √(gH), the thesis's defaults), and
-//! the tank's length rounded to a whole number of spacings (5.366 H within dx/2).
+//! [`crate::cases::box_tank::BoxTank`] (the 2D box tank has the polyline tank's ghosts), with the physics of
+//! the built-in case `cases/dam-break.toml` read from it ([`DamBreak`]: H, g, ρ0, c0, the column, the tank's
+//! length, the sensors P1 and P2), and the tank's length rounded to a whole number of spacings (within dx/2).
 
 use crate::cases::box_tank::BoxTank;
+use crate::driver::progress::{Progress, Status};
+use crate::driver::{drive, Flow, Outcome, Watch};
 use crate::sph::diagnostics::front;
 use crate::sph::polyline_wall::GhostKind;
 use crate::sph::solver::Simulation;
 use nalgebra::{SVector, Vector2, Vector3};
 use std::time::Instant;
 
-/// Water column height H (m), as in `cases/dam-break.toml`.
-pub const H: f64 = 0.6;
-const G: f64 = 9.81;
-const RHO0: f64 = 1000.0;
-/// Wall sensors P1 and P2: centre heights (m) and diameter (m), averaged over 5 points along the wall, as the
-/// 2D case's probes (Buchner's sensors, thesis §8.4).
-const SENSORS: [f64; 2] = [0.16, 0.584];
-const SENSOR_SIZE: f64 = 0.09;
+/// The dam break's physics, from the built-in case `cases/dam-break.toml`.
+#[derive(Clone, Copy, Debug)]
+struct DamBreak {
+    /// Water column height H (m): the case's length scale.
+    h: f64,
+    /// |g| (m/s²).
+    g: f64,
+    rho0: f64,
+    /// c0 (m/s).
+    c0: f64,
+    /// Column width / H.
+    column: f64,
+    /// Tank length / H (the wall's furthest point).
+    tank: f64,
+    /// Wall sensors P1 and P2: centre heights (m) and size (m), averaged over 5 points along the wall, as the
+    /// 2D case's probes (Buchner's sensors, thesis §8.4).
+    sensors: [f64; 2],
+    sensor_size: f64,
+}
+
+impl DamBreak {
+    fn read() -> anyhow::Result<DamBreak> {
+        let case = crate::cases::load("dam-break")?;
+        let h = case.scales.length;
+        let probe = |name: &str| {
+            case.probes
+                .pressure
+                .iter()
+                .find(|p| p.name == name)
+                .ok_or_else(|| anyhow::anyhow!("the dam-break case has no probe {name}"))
+        };
+        let (p1, p2) = (probe("P1")?, probe("P2")?);
+        let column = match case.blocks.first() {
+            Some(crate::cases::case_file::BlockSpec::Rectangle { min, max, .. }) => max[0] - min[0],
+            _ => anyhow::bail!("the dam-break case's water is not a rectangle"),
+        };
+        let tank = case
+            .walls
+            .first()
+            .and_then(|w| w.points.iter().map(|p| p[0]).reduce(f64::max))
+            .ok_or_else(|| anyhow::anyhow!("the dam-break case has no tank"))?;
+        Ok(DamBreak {
+            h,
+            g: case.gravity_magnitude(),
+            rho0: case.fluid.rho0,
+            c0: case.c0(),
+            column: column / h,
+            tank: tank / h,
+            sensors: [p1.position[1], p2.position[1]],
+            sensor_size: p1.size,
+        })
+    }
+}
 
 /// What to run.
 #[derive(Clone, Debug)]
@@ -128,61 +175,50 @@ impl SlabComparison {
 /// Runs `sim` to `opts.end`, sampling front and sensors; `at_wall(height)` is the sensor point on the right
 /// wall at that height (m).
 fn run_one<const D: usize>(
+    db: &DamBreak,
     mut sim: Simulation<D>,
     opts: &SlabOptions,
     at_wall: impl Fn(f64) -> SVector<f64, D>,
     label: &str,
     progress: bool,
 ) -> anyhow::Result<RunHistory> {
-    let ts = (H / G).sqrt();
-    let dx = H / opts.res;
+    let (big_h, g, rho0) = (db.h, db.g, db.rho0);
+    let ts = (big_h / g).sqrt();
+    let dx = big_h / opts.res;
     let mut h = RunHistory {
         n_fluid: sim.n_fluid(),
         ..Default::default()
     };
-    let bar = progress.then(|| {
-        let b = indicatif::ProgressBar::new((opts.end * 100.0) as u64);
-        b.set_style(
-            indicatif::ProgressStyle::with_template(&format!(
-                "{label} {{bar:40}} t* {{msg}} [{{elapsed_precise}} / eta {{eta_precise}}]"
-            ))
-            .expect("valid template"),
-        );
-        b
-    });
-    let clock = Instant::now();
     let mut next = 0.0;
-    loop {
+    let mut samples = Watch(|sim: &mut Simulation<D>| {
         let t_star = sim.time / ts;
         if t_star >= next {
             sim.refresh();
             let sensor = |centre: f64| -> f64 {
                 (0..5)
-                    .map(|k| sim.sensor_pressure_at(&at_wall(centre + SENSOR_SIZE * (k as f64 / 4.0 - 0.5))))
+                    .map(|k| sim.sensor_pressure_at(&at_wall(centre + db.sensor_size * (k as f64 / 4.0 - 0.5))))
                     .sum::<f64>()
                     / 5.0
-                    / (RHO0 * G * H)
+                    / (rho0 * g * big_h)
             };
             h.t_star.push(t_star);
-            h.front.push(front(&sim.fluid, 0, dx) / H);
-            h.p1.push(sensor(SENSORS[0]));
-            h.p2.push(sensor(SENSORS[1]));
+            h.front.push(front(&sim.fluid, 0, dx) / big_h);
+            h.p1.push(sensor(db.sensors[0]));
+            h.p2.push(sensor(db.sensors[1]));
             next += opts.every;
-            if let Some(b) = &bar {
-                b.set_position((t_star * 100.0) as u64);
-                b.set_message(format!("{t_star:.2}"));
-            }
         }
-        if t_star >= opts.end {
-            break;
-        }
-        if let Err(e) = sim.step() {
-            h.stopped = Some(format!("the {label} run blew up at t* = {t_star:.3}: {e}"));
-            break;
-        }
-    }
-    if let Some(b) = &bar {
-        b.finish_and_clear();
+        Ok(if t_star >= opts.end { Flow::Stop } else { Flow::Step })
+    });
+    let end = opts.end;
+    let mut bar = Progress::new(&format!("{label} "), progress, None, |sim: &Simulation<D>| Status {
+        fraction: sim.time / ts / end,
+        text: format!("t* = {:.2}", sim.time / ts),
+        steps: sim.steps,
+    });
+    let clock = Instant::now();
+    let outcome = drive(&mut sim, &mut [&mut samples, &mut bar])?;
+    if let Outcome::BlewUp(e) = outcome {
+        h.stopped = Some(format!("the {label} run blew up at t* = {:.3}: {e}", sim.time / ts));
     }
     h.steps = sim.steps;
     h.wall_seconds = clock.elapsed().as_secs_f64();
@@ -200,25 +236,26 @@ pub fn compare(opts: &SlabOptions, progress: bool) -> anyhow::Result<SlabCompari
              interval and CFL; got {opts:?}"
         );
     }
-    let dx = H / opts.res;
-    let long = (5.366 * opts.res).round() * dx;
-    let c0 = 20.0 * (G * H).sqrt();
+    let db = DamBreak::read()?;
+    let h = db.h;
+    let dx = h / opts.res;
+    let long = (db.tank * opts.res).round() * dx;
     let width = opts.width_cells as f64 * dx;
     let tank2 = BoxTank {
-        tank: Vector2::new(long, 5.0 * H),
-        water: Vector2::new(2.0 * H, H),
+        tank: Vector2::new(long, 5.0 * h),
+        water: Vector2::new(db.column * h, h),
         dx,
-        rho0: RHO0,
-        c0,
-        g: G,
+        rho0: db.rho0,
+        c0: db.c0,
+        g: db.g,
     };
     let tank3 = BoxTank {
-        tank: Vector3::new(long, width, 3.0 * H),
-        water: Vector3::new(2.0 * H, width, H),
+        tank: Vector3::new(long, width, 3.0 * h),
+        water: Vector3::new(db.column * h, width, h),
         dx,
-        rho0: RHO0,
-        c0,
-        g: G,
+        rho0: db.rho0,
+        c0: db.c0,
+        g: db.g,
     };
     let sim2 = tank2
         .build_with_ghosts(tank2.config(), opts.ghosts)
@@ -226,9 +263,9 @@ pub fn compare(opts: &SlabOptions, progress: bool) -> anyhow::Result<SlabCompari
     let sim3 = tank3
         .build_with_ghosts(tank3.config(), opts.ghosts)
         .map_err(anyhow::Error::msg)?;
-    let two = run_one(sim2, opts, |y| Vector2::new(long, y), "2D", progress)?;
+    let two = run_one(&db, sim2, opts, |y| Vector2::new(long, y), "2D", progress)?;
     let three = if two.stopped.is_none() {
-        run_one(sim3, opts, |z| Vector3::new(long, 0.5 * width, z), "3D", progress)?
+        run_one(&db, sim3, opts, |z| Vector3::new(long, 0.5 * width, z), "3D", progress)?
     } else {
         RunHistory::default()
     };

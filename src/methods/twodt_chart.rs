@@ -65,7 +65,7 @@ fn one_run(
     cfg.until = Until::X(at);
     cfg.output_dx = (at / 10.0).max(0.005);
     let opts = TwoDtOptions::quiet(std::env::temp_dir().join(format!("bowwave-chart-twodt-{}", std::process::id())));
-    let r = run(hull.clone(), &cfg, &opts);
+    let r = run(hull.clone(), &cfg, &opts).and_then(|e| e.ran());
     let _ = std::fs::remove_dir_all(&opts.out_dir);
     r
 }

@@ -1,13 +1,14 @@
 //! `bowwave converge twodt`: one hull at one Froude number run at several fine spacings dx/L, with the
 //! quantities of a 2D+t run as the converging values: the jet metrics at the plunge when every run plunges,
 //! and always the bow-wave crest height at the end of the run. The orders, the (C.2) order and the Richardson
-//! value are those of [`crate::convergence`]; the published Table 10.1 row, when there is one for this hull and
+//! value are those of [`crate::methods::convergence`]; the published Table 10.1 row, when there is one for this hull and
 //! Froude number, is the reference of x_plunge/L, y_plunge/L and H_pj/D (with the hull's status beside it, as
 //! an approximated hull's geometry differs from the thesis's).
 
-use crate::convergence::{Convergence, Quantity};
+use crate::driver::Ended;
 use crate::geometry::surface::HullSurface;
 use crate::io::atomic::write_atomic;
+use crate::methods::convergence::{Convergence, Quantity};
 use crate::twodt::checkpoint::CheckpointPolicy;
 use crate::twodt::run::{run, PlungeMetrics, TwoDtOptions, TwoDtResult};
 use crate::twodt::scene::TwoDtConfig;
@@ -118,7 +119,7 @@ pub fn run_dir(out: &Path, dx: f64) -> PathBuf {
 /// outputs and checkpoints (`policy`), and gathers the convergence. A run recorded as finished with the same
 /// configuration is reused, and a run stopped part-way goes on from its checkpoint, so a ladder whose finest
 /// runs take hours can be spread over several sessions or batch jobs. A run that stops early ends the study
-/// with its diagnosis.
+/// with its diagnosis; one halted at the wall-time limit ends it [`Ended::Halted`].
 pub fn converge_twodt(
     hull: Arc<HullSurface>,
     base: &TwoDtConfig,
@@ -126,7 +127,7 @@ pub fn converge_twodt(
     out: &Path,
     policy: &CheckpointPolicy,
     progress: bool,
-) -> anyhow::Result<Convergence> {
+) -> anyhow::Result<Ended<Convergence>> {
     anyhow::ensure!(dxs.len() >= 2, "--dx: expected at least two spacings");
     anyhow::ensure!(
         dxs.windows(2).all(|w| w[1] < w[0]) && dxs.iter().all(|&d| d > 0.0),
@@ -137,7 +138,7 @@ pub fn converge_twodt(
         let mut cfg = base.clone();
         cfg.dx = Some(dx);
         let dir = run_dir(out, dx);
-        let configuration = format!("{} | {cfg:?}", hull.meta.name);
+        let configuration = format!("{} | {:?}", hull.meta.name, cfg.physics());
         let recorded = std::fs::read_to_string(dir.join(RECORD))
             .ok()
             .and_then(|t| serde_json::from_str::<LadderRun>(&t).ok())
@@ -155,7 +156,10 @@ pub fn converge_twodt(
                     checkpoint: policy.clone(),
                     ..TwoDtOptions::quiet(dir.clone())
                 };
-                let result = run(hull.clone(), &cfg, &opts)?;
+                let result = match run(hull.clone(), &cfg, &opts)? {
+                    Ended::Ran(r) => r,
+                    Ended::Halted(h) => return Ok(Ended::Halted(h)),
+                };
                 let rec = LadderRun { configuration, result };
                 write_atomic(&dir.join(RECORD), serde_json::to_string_pretty(&rec)?.as_bytes())?;
                 rec.result
@@ -173,7 +177,7 @@ pub fn converge_twodt(
         results.push(r);
     }
     let label = format!("{} Fr {} (2D+t)", results[0].hull, base.fr);
-    Ok(convergence_of(&label, &results))
+    Ok(Ended::Ran(convergence_of(&label, &results)))
 }
 
 /// The convergence of finished `bowwave twodt` runs, from their folders' `metrics.json`, coarse to fine:
