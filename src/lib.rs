@@ -12,7 +12,7 @@
 //! * [`methods`]: convergence, speed against accuracy, stability maps and the throughput benchmark.
 //! * [`compare3d`]: the same flow in 2D and 3D (the dam-break slab).
 //! * [`validation`]: comparisons with analytic solutions and published data; `bowwave validate`.
-//! * [`reference`]: the validation data embedded from `data/reference/`.
+//! * [`mod@reference`]: the validation data embedded from `data/reference/`.
 //! * [`io`]: writers, one file per format (CSV, VTK, PNG plots, checkpoints), and atomic writes.
 //! * [`input_error`]: errors in user files, naming the file, the field and what was expected.
 //! * [`process_usage`]: CPU seconds and peak memory of this process.

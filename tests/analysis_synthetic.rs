@@ -259,7 +259,7 @@ fn hole_in_a_stretched_sheet_is_not_a_plunge() {
     assert!(f_open > 0.9, "fraction {f_open}");
 }
 
-/// The premise of plunge criterion 5 (docs/jet-metrics.md): at dx/L = 7e-4, Athena Fr 0.55 reported a
+/// The premise of plunge criterion 5 (docs/reference/jet-metrics.md): at dx/L = 7e-4, Athena Fr 0.55 reported a
 /// "plunge" at x/L 0.227 that was a sliver of air between the top particle row peeling off the sheet that
 /// climbs the hull and the sheet below it, both moving up together (Γ/(UD) = −0.011). A sliver between
 /// layers that move together has next to no circulation, while the same sliver with the fluid turning around

@@ -124,7 +124,7 @@ fn without_viscosity_or_diffusion_the_dam_break_goes_noisy() {
 }
 
 /// The 2D+t Athena case at Fr 0.5 (approximated hull, coarse dx/L = 2e-3, to x/L = 0.2): standard WCSPH
-/// against δ-SPH. Neither plunges at this resolution (nor does δ-SPH at any resolution tried, docs/twodt.md),
+/// against δ-SPH. Neither plunges at this resolution (nor does δ-SPH at any resolution tried, docs/reference/twodt.md),
 /// so the comparison is on what both produce: the pressure noise at the end and the bow-wave height.
 /// Measured here (dx/L = 2e-3, x/L = 0.2): 0.0131 against 0.0720 ρgD, 5.5×. At dx/L = 1.5e-3 to x/L = 0.25:
 /// 0.0154 against 0.0764 (5.0×); crest η/D 0.99 against 1.12 at x/L = 0.2 (WCSPH 13 % higher).

@@ -197,7 +197,7 @@ fn finished_cases_are_skipped_on_rerun_and_collected() {
 
 /// The published trends of the jet's own metrics (I_OG/S², α_G) are judged only on jets of at least
 /// `RESOLVED_JET_PARTICLES` particles: at dx/L 7e-4 (15–32 jet particles) a round-off change of the initial
-/// packing flipped the α_G verdict (docs/twodt.md, session 16). Metrics put in by hand on two short runs.
+/// packing flipped the α_G verdict (docs/reference/twodt.md, session 16). Metrics put in by hand on two short runs.
 #[test]
 fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
     use bowwave::studies::collect::{report, trends, RESOLVED_JET_PARTICLES};

@@ -59,7 +59,7 @@ fn assert_checks(checks: &[bowwave::validation::Check], names: &[&str]) {
 /// its walls carry its weight within 1 % (a fluid at rest is held by its walls alone). The pressure is printed,
 /// not asserted: with fixed ghosts in 3D it creeps up while the water stays at rest (bottom sensor 1.014 ρgH at
 /// t* = 5, 1.040 at 20, the interior gradient 3 % above ρ0 g; 2D at the same spacing holds 1.01–1.016), an open
-/// defect of this coarse spacing written up in docs/method.md ("Three dimensions": at H/dx 20 it reads
+/// defect of this coarse spacing written up in docs/reference/method.md ("Three dimensions": at H/dx 20 it reads
 /// 1.001–1.012 of M g / A over t* 5–20, no trend); the next test shows that image ghosts on the faces remove it.
 #[test]
 fn three_dimensional_tank_is_held_at_rest_by_its_walls() {
@@ -118,7 +118,7 @@ fn three_dimensional_dam_break_gives_identical_bits_on_one_and_two_threads() {
 /// stays within the 2D front's own resolution error of the 2D front, with either kind of ghosts. H/dx = 10, a
 /// slab 4 spacings wide. The bound at each sampled time from t√(g/H) = 0.3 to 2.1 is |x_2D(H/dx 20) −
 /// x_2D(H/dx 10)|, the change of the 2D front when the spacing is halved (0.08–0.25 H; the 3D–2D gap is
-/// 0.03–0.08 H, docs/method.md).
+/// 0.03–0.08 H, docs/reference/method.md).
 #[test]
 fn three_dimensional_slab_front_follows_the_two_dimensional_one_within_its_resolution_error() {
     use bowwave::compare3d::slab::{compare, SlabOptions};

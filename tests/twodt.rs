@@ -426,7 +426,7 @@ fn convergence_ladder_reuses_finished_runs_and_gathers_run_folders() {
 /// The plunge instant searched step by step from the last regular check (the fast path: a check every
 /// `detect_every` = 10 steps, then back to the check before a plunge and every step from there) against the
 /// slow oracle of a check at every step: the same step, the same plunge. Athena Fr 0.55 at dx/L = 7e-4 with
-/// criterion 5 off, whose first closed cavity (the false plunge of docs/jet-metrics.md, criterion 5) closes
+/// criterion 5 off, whose first closed cavity (the false plunge of docs/reference/jet-metrics.md, criterion 5) closes
 /// near x/L 0.227: two runs of about 1 100 steps of 49 000 particles, 331 s on 2 cores, so not run in CI:
 /// `cargo test --release --test twodt -- --ignored plunge_instant`.
 #[test]

@@ -77,7 +77,7 @@ fn oscillating_drop_follows_the_ode_for_two_periods() {
 
 /// The Martin–Moyce column's residual height at the back wall follows their Table 6 within one marker
 /// spacing (1/18 of the column height). Measured: max 0.019 (a/dx 25), 0.020 (50). The front of the same
-/// run misses the 10 % (see docs/method.md), so only its error is required to be computed here.
+/// run misses the 10 % (see docs/reference/method.md), so only its error is required to be computed here.
 #[test]
 fn martin_moyce_column_height_follows_table_6() {
     let r = run_case("dam-break-mm", 25.0, None);
@@ -93,7 +93,7 @@ fn martin_moyce_column_height_follows_table_6() {
 /// The whole jet on a flat wall (`jet-plate`, no floor): the wall force within 2 % of ρU²h and every sensor's
 /// mean Cp within 0.03 of Taylor's free-streamline solution. Measured at b/dx 10: force 0.15 %, Cp 0.0195
 /// (the stagnation sensors, 0.98 against 1.00). Without the floor the stagnation pressure is right: the
-/// excess of `jet-wall` comes from its floor's ghosts (`jet-floor`, docs/method.md check 11).
+/// excess of `jet-wall` comes from its floor's ghosts (`jet-floor`, docs/reference/method.md check 11).
 #[test]
 fn jet_on_a_flat_wall_has_the_free_streamline_pressure() {
     let r = run_case("jet-plate", 10.0, None);
@@ -121,7 +121,7 @@ fn run_with_image_ghosts(name: &str, res: f64) -> bowwave::cases::run::RunResult
 /// Measured at b/dx 10: jet-floor stagnation 0.983 (fixed ghosts: 2.79); jet-wall corner 0.994 (fixed:
 /// 1.70), y/h ≥ 0.3 within 0.012 (fixed: 0.23). At b/dx 20 `bowwave validate jet-floor --ghosts images`
 /// passes every sensor (0.014); at b/dx 10 its worst sensor is 0.033 off, so only the stagnation one is held
-/// here (docs/method.md check 12).
+/// here (docs/reference/method.md check 12).
 #[test]
 fn flow_leaving_a_floor_of_image_ghosts_keeps_the_stagnation_pressure() {
     let r = run_with_image_ghosts("jet-floor", 10.0);
@@ -152,7 +152,7 @@ fn flow_leaving_a_floor_of_image_ghosts_keeps_the_stagnation_pressure() {
 /// A plane jet on a wall (the dam break's corner, without gravity): the mean wall force over the steady
 /// window equals ρU²b, the momentum theorem, within 2 %. Measured 0.35 % (b/dx 10). The sensors' Cp is
 /// reported, not required: it reads above the free-streamline solution and the excess grows with time at
-/// the corner (docs/method.md).
+/// the corner (docs/reference/method.md).
 #[test]
 fn jet_on_a_wall_carries_its_momentum_flux() {
     let r = run_case("jet-wall", 10.0, None);
@@ -174,7 +174,7 @@ fn jet_on_a_wall_carries_its_momentum_flux() {
 fn impact_time_measure_reads_the_published_curves() {
     // The first-impact measure used by `bowwave validate` (first crossing of p/(ρgH) = 0.1 by the signal
     // averaged over 0.05 t√(g/H)), applied to the published data themselves. Our own impact time is not asserted here: at H/dx = 40 it matches Buchner only
-    // through a splash spike and at H/dx = 80 it misses both references (docs/method.md), so `validate` reports
+    // through a splash spike and at H/dx = 80 it misses both references (docs/reference/method.md), so `validate` reports
     // FAIL for it.
     use bowwave::reference::{col, load, named};
     let m = load("marrone_p1");
@@ -292,7 +292,7 @@ fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
     );
     assert!(c.circulation < 0.0, "circulation {}", c.circulation);
     // The same run's reported pressure checks, among them P1's rise against Marrone, P1's centre against
-    // TrixiParticles and P1/P2 at Greco's placement, are computed (they carry no tolerance: docs/method.md,
+    // TrixiParticles and P1/P2 at Greco's placement, are computed (they carry no tolerance: docs/reference/method.md,
     // checks 12–14 and "Two checks for the owner to decide").
     let checks = validation::dam_break(&r);
     validation::print_checks(&checks);

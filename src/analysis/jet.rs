@@ -1,4 +1,4 @@
-//! The plunging jet at the plunge instant (definitions in docs/jet-metrics.md, our own: the thesis gives
+//! The plunging jet at the plunge instant (definitions in docs/reference/jet-metrics.md, our own: the thesis gives
 //! none). The jet is the fluid of the overhanging crest beyond the point where the front face of the wave
 //! is vertical, bounded below by the cavity: the particles standing above the cavity, column by column of
 //! the level-set grid, between the cavity's leftmost node (where its wall is vertical) and its rightmost

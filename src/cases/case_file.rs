@@ -81,7 +81,7 @@ pub struct Numerics {
     #[serde(default)]
     pub ghost_interpolation: crate::sph::solver::GhostInterpolation,
     /// Tabulate the Gaussian's gradient in r² (`sph::kernel_table`); default true: the same accuracy as the
-    /// exact kernel on the dam break and the 2D+t chart for 10–25 % less CPU (docs/speed-accuracy.md).
+    /// exact kernel on the dam break and the 2D+t chart for 10–25 % less CPU (docs/reference/speed-accuracy.md).
     #[serde(default = "default_kernel_table")]
     pub kernel_table: bool,
 }

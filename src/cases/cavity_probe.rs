@@ -1,5 +1,5 @@
 //! The cavity probe of a case: watches the fluid, from a given time on, for the first air cavity that a
-//! plunging jet closes, with the definitions of the 2D+t plunge detection (docs/jet-metrics.md): an air region
+//! plunging jet closes, with the definitions of the 2D+t plunge detection (docs/reference/jet-metrics.md): an air region
 //! of the level set (appendix B) not connected to the atmosphere, of area at least (2h)², every node of it
 //! farther than 3h from every wall, and at least half of it open to the atmosphere at the previous check (so
 //! that holes opening inside a stretched sheet are not taken for a closure). The dam break's plunging wave

@@ -169,13 +169,9 @@ pub fn write_snapshot(sim: &Simulation<2>, path: &Path) -> std::io::Result<()> {
 
 /// Largest rise of the mechanical energy above its initial value, as a fraction of the case's energy scale
 /// (M g L with gravity), accepted before a run with fixed walls is stopped: with a conservative body force
-/// the scheme should only dissipate, so a rise means an unstable time integration or a non-conservative term
-/// (the uncorrected Molteni–Colagrossi diffusion raises the hydrostatic tank's energy by 1e-3 M g H by
-/// t√(g/H) = 5.6 at H/dx = 10; δ-SPH by at most 3.5e-5 in its first settling). Measured on the dam
-/// break at H/dx = 20 to t√(g/H) = 7.3: stable runs (RK4 at CFL 2 and 3, predictor–corrector at 0.5 and 0.75)
-/// rise by at most 4.7e-7; unstable ones by 4.9e-3 (RK4, CFL 4) to 0.46 (predictor–corrector, CFL 1.5), some
-/// of which end without a NaN or a particle out of the domain. 1e-3 sits 2 000× above the first and 5× below
-/// the second.
+/// the scheme should only dissipate, so a rise means an unstable time integration or a non-conservative term.
+/// 1e-3 lies 2 000× above what stable runs reach and 5× below the least unstable one measured
+/// (`docs/decisions/integrator-cfl.md`).
 pub const ENERGY_GROWTH_LIMIT: f64 = 1e-3;
 
 /// Samples the time series at the case's interval (and at the start and the end), watches for the first

@@ -2,7 +2,7 @@
 //! and as a 3D slab between free-slip side walls, so that the 3D engine is checked against the 2D one on a
 //! flow that is 2D, and the cost of the third dimension is measured. Both runs use
 //! [`crate::cases::box_tank::BoxTank`] (the 2D box tank has the polyline tank's ghosts), with the physics of
-//! the built-in case `cases/dam-break.toml` read from it ([`DamBreak`]: H, g, ρ0, c0, the column, the tank's
+//! the built-in case `cases/dam-break.toml` read from it (`DamBreak`: H, g, ρ0, c0, the column, the tank's
 //! length, the sensors P1 and P2), and the tank's length rounded to a whole number of spacings (within dx/2).
 
 use crate::cases::box_tank::BoxTank;
@@ -81,7 +81,7 @@ pub struct SlabOptions {
     pub ghosts: GhostKind,
     /// Sampling interval in t√(g/H).
     pub every: f64,
-    /// CFL number of both runs (`None`: the integrator's default, RK4 2.0, docs/method.md).
+    /// CFL number of both runs (`None`: the integrator's default, RK4 2.0, docs/reference/method.md).
     pub cfl: Option<f64>,
 }
 

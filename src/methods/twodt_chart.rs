@@ -3,7 +3,7 @@
 //! (highest free surface outside the waterline, / D) as the measured quantity.
 //!
 //! Why the crest height and not the jet metrics: none of our 2D+t runs of the approximated hulls plunges
-//! (docs/twodt.md), so there are no jet metrics to compare; the crest height at a fixed x/L is what every run
+//! (docs/reference/twodt.md), so there are no jet metrics to compare; the crest height at a fixed x/L is what every run
 //! produces and what the jet grows from. Its reference is the δ-SPH run at the finer `reference_dx` (not a
 //! published value): the error measured is the discretisation and method error, not the model's.
 

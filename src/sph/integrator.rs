@@ -22,7 +22,7 @@ impl Integrator {
         }
     }
 
-    /// Default CFL, from the limits measured on the dam break at H/dx = 20 (docs/method.md): RK4 stays
+    /// Default CFL, from the limits measured on the dam break at H/dx = 20 (docs/reference/method.md): RK4 stays
     /// stable up to CFL 3 (at 4 the step is force-limited 40 % of the time), so 2.0 keeps a 1.5× margin and
     /// stays below the thesis's 2.5; the predictor–corrector starts to create energy at CFL 1.0–1.5 and
     /// blows up from 2.5, so 0.5 (the thesis uses 0.3).

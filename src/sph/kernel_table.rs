@@ -1,7 +1,7 @@
 //! The kernel-gradient factor F(r²) = (dW/dr)/r tabulated in r² and linearly interpolated: a speed variant
 //! (`kernel_table = true` in a case's `[numerics]`, variant `table` in the charts) that replaces one
 //! exponential per pair and stage by two table reads. Its effect on accuracy is measured in
-//! `docs/speed-accuracy.md`, not assumed.
+//! `docs/reference/speed-accuracy.md`, not assumed.
 //!
 //! Tabulating in r² keeps F a function of |r_ij|² alone, so F_ij = F_ji exactly and the pairwise forces stay
 //! antisymmetric (momentum is conserved as with the exact kernel). Only the Gaussian is tabulated: for

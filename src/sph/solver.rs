@@ -62,7 +62,7 @@ pub struct SolverConfig<const D: usize> {
     pub ghost_interpolation: GhostInterpolation,
     /// Tabulate the kernel-gradient factor in r² ([`GradientTable`]), Gaussian only (the Wendland kernel is
     /// always exact). Default true: the dam-break and 2D+t charts show the same error as the exact kernel for
-    /// 10–25 % less CPU (docs/speed-accuracy.md); `false` is the `exact-kernel` variant.
+    /// 10–25 % less CPU (docs/reference/speed-accuracy.md); `false` is the `exact-kernel` variant.
     pub kernel_table: bool,
 }
 

@@ -176,7 +176,7 @@ pub fn report(
             s,
             "\nJets of fewer than {RESOLVED_JET_PARTICLES} particles: their Γ, L_jet, S_jet, I_OG, α_G and α_VG are \
              at round-off level (a round-off change of the initial state moved them by 40–150 % and 9° at dx/L 7e-4, \
-             docs/twodt.md); read x_p, y_p and H_pj only."
+             docs/reference/twodt.md); read x_p, y_p and H_pj only."
         );
     }
     if comps.is_empty() {
@@ -216,7 +216,7 @@ pub fn report(
 }
 
 /// Fewest jet particles whose jet metrics (Γ, L_jet, S_jet, I_OG, α_G, α_VG) the report reads as signal.
-/// Measured (docs/twodt.md, session 16): with 15–32 jet particles (dx/L 7e-4) a round-off change of the initial
+/// Measured (docs/reference/twodt.md, session 16): with 15–32 jet particles (dx/L 7e-4) a round-off change of the initial
 /// packing moved Γ by 42 %, L_jet by 48 %, I_OG/S² by a factor 2.5 and α_G by 9°, while x_plunge, y_plunge
 /// and H_pj moved by 0.1–3.6 %; the thesis's spacings give 190–283. 100 lies between; its own noise is not
 /// measured.
@@ -260,7 +260,7 @@ pub fn trends(recs: &[CaseRecord]) -> Vec<String> {
         if fewest < RESOLVED_JET_PARTICLES {
             format!(
                 "not assessed (a jet of {fewest} particles, fewer than {RESOLVED_JET_PARTICLES}: round-off alone moves \
-                 this metric by tens of percent at such jets, docs/twodt.md)"
+                 this metric by tens of percent at such jets, docs/reference/twodt.md)"
             )
         } else {
             yes(b).to_string()

@@ -1,7 +1,7 @@
 //! The study file: a TOML description of a Froude sweep (hull, Froude numbers, resolution rule, domain and
 //! model options, where to stop, which outputs), resolved into one [`CaseSpec`] per Froude number. Every error
 //! names the file, the field and what was expected. The fields and their defaults are documented in
-//! `docs/studies.md`.
+//! `docs/reference/studies.md`.
 
 use crate::input_error::{parse_toml, read_text, InputError};
 use crate::twodt::config::{ConfigOption, TwoDtConfig, Until};

@@ -9,6 +9,86 @@
 use crate::sph::density_diffusion::DensityDiffusion;
 use serde::{Deserialize, Serialize};
 
+/// A value written as one of a few words or as a number: [`Until`] and [`PlungeCirculation`], on the
+/// command line (`FromStr`, `Display`) and in TOML and JSON (a string or a number).
+pub trait WordOrNumber: Sized + Copy + PartialEq + 'static {
+    /// The words and their values.
+    const WORDS: &'static [(&'static str, Self)];
+    /// What a number means, for the error message.
+    const NUMBER: &'static str;
+    fn from_number(x: f64) -> Self;
+    /// The number, when the value is one.
+    fn number(self) -> Option<f64>;
+
+    /// One of the words, or a number; the error says which were expected.
+    fn parse_word_or_number(s: &str) -> Result<Self, String> {
+        let s = s.trim();
+        if let Some((_, v)) = Self::WORDS.iter().find(|(w, _)| *w == s) {
+            return Ok(*v);
+        }
+        s.parse::<f64>()
+            .map(Self::from_number)
+            .map_err(|_| format!("expected {}, got `{s}`", Self::expected("`")))
+    }
+
+    /// What is expected, the words quoted with `quote`.
+    fn expected(quote: &str) -> String {
+        let words: Vec<String> = Self::WORDS.iter().map(|(w, _)| format!("{quote}{w}{quote}")).collect();
+        format!("{} or {}", words.join(", "), Self::NUMBER)
+    }
+
+    /// The value's word ("" for a number).
+    fn word(self) -> &'static str {
+        Self::WORDS.iter().find(|(_, v)| *v == self).map_or("", |(w, _)| w)
+    }
+}
+
+/// The file form of a [`WordOrNumber`].
+#[derive(Serialize, Deserialize)]
+#[serde(untagged)]
+enum Written {
+    Number(f64),
+    Word(String),
+}
+
+/// `FromStr`, `Display`, `Serialize` and `Deserialize` of a [`WordOrNumber`] type.
+macro_rules! word_or_number_impls {
+    ($t:ty) => {
+        impl std::str::FromStr for $t {
+            type Err = String;
+            fn from_str(s: &str) -> Result<Self, String> {
+                <$t>::parse_word_or_number(s)
+            }
+        }
+        impl std::fmt::Display for $t {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                match self.number() {
+                    Some(x) => write!(f, "{x}"),
+                    None => f.write_str(self.word()),
+                }
+            }
+        }
+        impl Serialize for $t {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                match self.number() {
+                    Some(x) => Written::Number(x),
+                    None => Written::Word(self.word().to_string()),
+                }
+                .serialize(s)
+            }
+        }
+        impl<'de> Deserialize<'de> for $t {
+            fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                let expected = || format!("expected {}", Self::expected("\""));
+                match Written::deserialize(d).map_err(|_| serde::de::Error::custom(expected()))? {
+                    Written::Number(x) => Ok(Self::from_number(x)),
+                    Written::Word(w) => w.parse().map_err(serde::de::Error::custom),
+                }
+            }
+        }
+    };
+}
+
 /// Where a run stops: `plunge`, `transom` or an x/L value.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Until {
@@ -20,58 +100,21 @@ pub enum Until {
     X(f64),
 }
 
-impl std::str::FromStr for Until {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        match s.trim() {
-            "plunge" => Ok(Until::Plunge),
-            "transom" => Ok(Until::Transom),
-            v => v
-                .parse::<f64>()
-                .map(Until::X)
-                .map_err(|_| format!("expected `plunge`, `transom` or an x/L value, got `{v}`")),
-        }
+impl WordOrNumber for Until {
+    const WORDS: &'static [(&'static str, Self)] = &[("plunge", Until::Plunge), ("transom", Until::Transom)];
+    const NUMBER: &'static str = "an x/L value";
+    fn from_number(x: f64) -> Self {
+        Until::X(x)
     }
-}
-
-impl std::fmt::Display for Until {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+    fn number(self) -> Option<f64> {
         match self {
-            Until::Plunge => f.write_str("plunge"),
-            Until::Transom => f.write_str("transom"),
-            Until::X(x) => write!(f, "{x}"),
+            Until::X(x) => Some(x),
+            _ => None,
         }
     }
 }
 
-/// A word or a number in a file: the form of [`Until`] and [`PlungeCirculation`] in TOML and JSON.
-#[derive(Serialize, Deserialize)]
-#[serde(untagged)]
-enum WordOrNumber {
-    Number(f64),
-    Word(String),
-}
-
-impl Serialize for Until {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match self {
-            Until::X(x) => WordOrNumber::Number(*x),
-            w => WordOrNumber::Word(w.to_string()),
-        }
-        .serialize(s)
-    }
-}
-
-impl<'de> Deserialize<'de> for Until {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        match WordOrNumber::deserialize(d)
-            .map_err(|_| serde::de::Error::custom("expected \"plunge\", \"transom\" or an x/L value"))?
-        {
-            WordOrNumber::Number(x) => Ok(Until::X(x)),
-            WordOrNumber::Word(w) => w.parse().map_err(serde::de::Error::custom),
-        }
-    }
-}
+word_or_number_impls!(Until);
 
 /// Whether the initial rows are packed (thesis chapter 6, `sph::packing`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -118,7 +161,8 @@ impl std::fmt::Display for Packing {
     }
 }
 
-/// Plunge criterion 5 of docs/jet-metrics.md: the least circulation Γ/(UD) around a closed cavity, or off.
+/// Plunge criterion 5 of docs/reference/jet-metrics.md: the least circulation Γ/(UD) around a closed
+/// cavity, or off.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PlungeCirculation {
     Off,
@@ -128,55 +172,25 @@ pub enum PlungeCirculation {
 impl PlungeCirculation {
     /// The threshold, `None` when the criterion is off.
     pub fn threshold(self) -> Option<f64> {
+        self.number()
+    }
+}
+
+impl WordOrNumber for PlungeCirculation {
+    const WORDS: &'static [(&'static str, Self)] = &[("off", PlungeCirculation::Off)];
+    const NUMBER: &'static str = "a number Γ/(UD)";
+    fn from_number(g: f64) -> Self {
+        PlungeCirculation::AtLeast(g)
+    }
+    fn number(self) -> Option<f64> {
         match self {
-            PlungeCirculation::Off => None,
             PlungeCirculation::AtLeast(g) => Some(g),
+            PlungeCirculation::Off => None,
         }
     }
 }
 
-impl std::str::FromStr for PlungeCirculation {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Self, String> {
-        match s.trim() {
-            "off" => Ok(PlungeCirculation::Off),
-            v => v
-                .parse::<f64>()
-                .map(PlungeCirculation::AtLeast)
-                .map_err(|_| format!("expected `off` or a number Γ/(UD), got `{v}`")),
-        }
-    }
-}
-
-impl std::fmt::Display for PlungeCirculation {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            PlungeCirculation::Off => f.write_str("off"),
-            PlungeCirculation::AtLeast(g) => write!(f, "{g}"),
-        }
-    }
-}
-
-impl Serialize for PlungeCirculation {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match self {
-            PlungeCirculation::AtLeast(g) => WordOrNumber::Number(*g),
-            PlungeCirculation::Off => WordOrNumber::Word("off".into()),
-        }
-        .serialize(s)
-    }
-}
-
-impl<'de> Deserialize<'de> for PlungeCirculation {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        match WordOrNumber::deserialize(d)
-            .map_err(|_| serde::de::Error::custom("expected \"off\" or a number Γ/(UD)"))?
-        {
-            WordOrNumber::Number(g) => Ok(PlungeCirculation::AtLeast(g)),
-            WordOrNumber::Word(w) => w.parse().map_err(serde::de::Error::custom),
-        }
-    }
-}
+word_or_number_impls!(PlungeCirculation);
 
 /// The defaults, for clap's `default_value_t` (the one place they are written is [`TwoDtConfig::default`]).
 fn d() -> TwoDtConfig {
@@ -197,7 +211,7 @@ pub struct TwoDtConfig {
     #[arg(skip)]
     pub dx: Option<f64>,
     /// Coarse spacing below the transition, as a multiple of dx, in [1, 4] (constant h; 1 = uniform).
-    /// Default 1.5, packed: 42 % fewer particles for the same crest within 0.5 % (docs/twodt.md).
+    /// Default 1.5, packed: 42 % fewer particles for the same crest within 0.5 % (docs/reference/twodt.md).
     #[arg(long = "ratio", value_name = "R", default_value_t = d().coarse_ratio)]
     #[serde(rename = "ratio")]
     pub coarse_ratio: f64,
@@ -242,12 +256,12 @@ pub struct TwoDtConfig {
     #[arg(long, default_value_t = d().detect_every)]
     pub detect_every: usize,
     /// Optional plunge criterion 3 (ours, off by default): a closed air cavity counts as the plunge only if
-    /// its lowest point lies below this fraction of the crest height, e.g. 0.5 (docs/jet-metrics.md).
+    /// its lowest point lies below this fraction of the crest height, e.g. 0.5 (docs/reference/jet-metrics.md).
     #[arg(long)]
     pub plunge_depth: Option<f64>,
     /// Plunge criterion 5: a closed air cavity counts as the plunge only if the circulation around it,
     /// Γ/(UD), is at least this (clockwise positive: a jet overturning away from the hull; the thesis,
-    /// §10.1.3, has "a net circulation around this formed closed cavity"), or `off` (docs/jet-metrics.md).
+    /// §10.1.3, has "a net circulation around this formed closed cavity"), or `off` (docs/reference/jet-metrics.md).
     #[arg(long, default_value_t = d().plunge_circulation)]
     pub plunge_circulation: PlungeCirculation,
     /// x/L between outputs (series row, η(y) profile, VTK frame).
@@ -258,7 +272,7 @@ pub struct TwoDtConfig {
     #[arg(long, default_value_t = d().diffusion)]
     pub diffusion: DensityDiffusion,
     /// Evaluate the Gaussian kernel's gradient at every pair instead of from its table in r² (the table
-    /// changes positions by about 1e-6 dx for 10–25 % less CPU; docs/speed-accuracy.md).
+    /// changes positions by about 1e-6 dx for 10–25 % less CPU; docs/reference/speed-accuracy.md).
     #[arg(long)]
     pub exact_kernel: bool,
     /// CFL number of eq. (4.22) (default: the integrator's, RK4 2.0).

@@ -30,8 +30,8 @@ pub fn auto_dx(fr: f64, draft: f64) -> f64 {
 }
 
 /// Expected maximum fluid speed / √(gL): the larger of 2.5 times the largest expansion velocity |w_n| met
-/// between x0 and x_end, and the free-fall speed √(2 g H_pj) of the crest. (With 2 × |w_n| the run-up
-/// sheet of Athena at Fr 0.64, dx/L = 5e-4, reached Mach 0.107 at x/L = 0.054.)
+/// between x0 and x_end (the run-up sheet is faster than the wall that pushes it), and the free-fall speed
+/// √(2 g H_pj) of the crest (`docs/decisions/twodt-sound-speed.md`).
 pub fn expected_max_speed(hull: &HullSurface, fr: f64, x0: f64, x_end: f64, draft: f64) -> f64 {
     let mut wn = 0.0f64;
     let n = 200;
@@ -252,7 +252,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
 /// Fraction of the fine layer, from the calm level down, whose rows the packing holds in place. Measured on
 /// the still tank (Athena before the stem, dx/L = 2e-3, r = 1.5) and on the Athena Fr 0.5 crest at x/L = 0.2
 /// (dx/L = 1.5e-3; uniform rows: 0.988 D): holding nothing, 7.6e-7 M g D and 0.930 D; the whole fine layer,
-/// 1.0e-6 and 0.989; half of it, 7.0e-7 and 0.993; a quarter, 8.6e-7 and 1.016 (docs/twodt.md).
+/// 1.0e-6 and 0.989; half of it, 7.0e-7 and 0.993; a quarter, 8.6e-7 and 1.016 (docs/reference/twodt.md).
 pub const PACKING_HELD_FRACTION: f64 = 0.5;
 
 /// Packs the initial rows (thesis chapter 6) below the upper part of the fine layer (depth `fine_depth`,

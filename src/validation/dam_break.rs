@@ -78,7 +78,7 @@ pub fn impact_time(t: &[f64], p: &[f64]) -> f64 {
 
 /// The window (t√(g/H)) over which P1's rise after the impact is summed up in one mean: the half t* after
 /// the water reaches the wall (t* ≈ 2.45 in every run and in the experiment), where Marrone's and Buchner's P1
-/// jump to 0.6–0.7 ρgH and ours, PySPH's and TrixiParticles' climb through 0.1–0.3 (docs/method.md).
+/// jump to 0.6–0.7 ρgH and ours, PySPH's and TrixiParticles' climb through 0.1–0.3 (docs/reference/method.md).
 pub const P1_RISE_WINDOW: (f64, f64) = (2.5, 3.0);
 
 /// Mean of a signal, linear between its samples, over [from, to], read every 0.005 (so that sparse digitised
@@ -201,7 +201,7 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
         None,
     ));
     // Another code at P1's centre: TrixiParticles' own reference runs read an 8.4 mm sensor there (their P4).
-    // Reported, no tolerance: it tells whether our slow rise at P1 is ours alone (docs/method.md, check 14).
+    // Reported, no tolerance: it tells whether our slow rise at P1 is ours alone (docs/reference/method.md, check 14).
     if let Some(pc) = r.series.column("pstar_P1c") {
         let (tres, tt, tp) = trixi_p1_centre(res);
         out.push(check(

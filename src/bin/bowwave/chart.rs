@@ -35,9 +35,9 @@ pub enum ChartKind {
         /// Hull offsets file.
         #[arg(long, default_value = "hulls/athena.csv")]
         hull: PathBuf,
-        /// Ship Froude number U/sqrt(gL).
-        #[arg(long, default_value_t = 0.5)]
-        fr: f64,
+        /// The base options of every run (as `bowwave twodt`'s; each variant changes one of them).
+        #[command(flatten, next_help_heading = "2D+t options")]
+        config: Box<bowwave::twodt::config::TwoDtConfig>,
         /// 2D+t variants: delta-sph, molteni, wcsph, table (tabulated kernel gradient, the default),
         /// exact-kernel, cfl=C (RK4 CFL), ratio=R (graded rows, coarse spacing R dx below 0.2 D).
         #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "wcsph".to_string(), "exact-kernel".to_string(), "cfl=2.5".to_string(), "ratio=1.5".to_string()])]
@@ -124,7 +124,7 @@ impl ChartKind {
             }
             ChartKind::Twodt {
                 hull,
-                fr,
+                config,
                 variants,
                 dx,
                 reference_dx,
@@ -135,10 +135,9 @@ impl ChartKind {
                 let offsets = bowwave::geometry::hull_file::HullOffsets::read(&hull)?;
                 let name = offsets.meta.name.clone();
                 let surface = std::sync::Arc::new(bowwave::geometry::surface::HullSurface::new(&offsets));
-                let base = bowwave::twodt::scene::TwoDtConfig {
-                    fr,
-                    ..Default::default()
-                };
+                let base = *config;
+                base.check()?;
+                let fr = base.fr;
                 let chart = twodt_chart::twodt_speed_accuracy(surface, &base, &variants, &dx, reference_dx, at)?;
                 let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-twodt-{name}-{fr}")));
                 println!(

@@ -8,7 +8,7 @@ pub enum HullAction {
     /// Hydrostatics from the spline surface (displacement, Cb, Cp, Cm, Cwp, LCB, girths) beside the declared
     /// particulars; warns where they differ by more than 2 %.
     Check {
-        /// Hull offsets file (CSV, see docs/hull-format.md).
+        /// Hull offsets file (CSV, see docs/reference/hull-format.md).
         file: PathBuf,
     },
     /// Slice a triangulated hull (STL, metres, z = 0 at the waterline) at stations and write a hull file.

@@ -46,7 +46,7 @@ enum Command {
         #[command(subcommand)]
         kind: chart::ChartKind,
     },
-    /// Froude sweep: run every case of a study file (TOML, see docs/studies.md) that is not finished yet, then
+    /// Froude sweep: run every case of a study file (TOML, see docs/reference/studies.md) that is not finished yet, then
     /// gather them into jets.csv, comparison.csv, report.md, figures and manifest.json. Resumable: finished
     /// cases are recorded and skipped; an interruption loses at most the cases in progress.
     Study(study::StudyArgs),

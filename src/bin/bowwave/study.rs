@@ -40,7 +40,7 @@ pub struct StudyArgs {
     #[arg(long)]
     pub wall_limit: Option<f64>,
     /// Cases run at the same time, each with threads/jobs worker threads (default 1: every thread inside
-    /// one case, measured faster on 2 cores, see docs/studies.md).
+    /// one case, measured faster on 2 cores, see docs/reference/studies.md).
     #[arg(long, default_value_t = 1)]
     pub jobs: usize,
     /// No progress bars.

@@ -11,14 +11,14 @@ use std::sync::Arc;
 
 #[derive(Args)]
 pub struct TwodtArgs {
-    /// Hull offsets file (CSV, see docs/hull-format.md).
+    /// Hull offsets file (CSV, see docs/reference/hull-format.md).
     #[arg(long, default_value = "hulls/athena.csv")]
     pub hull: PathBuf,
     /// Fine particle spacing dx/L near the free surface (default: from H_pj/dx > 20, eq. 10.9, with the
     /// bow-wave height estimated from Table 10.1 of the thesis).
     #[arg(long)]
     pub dx: Option<f64>,
-    /// Every option of the case (the same keys as a study file's `[config]`, docs/studies.md).
+    /// Every option of the case (the same keys as a study file's `[config]`, docs/reference/studies.md).
     #[command(flatten)]
     pub config: twodt::config::TwoDtConfig,
     /// Output folder (default: out/twodt-HULL-frFR).
