@@ -540,3 +540,35 @@ fn walk(dir: &Path) -> Vec<PathBuf> {
     }
     files
 }
+
+/// Every case may have its own hull: a file, or a generated variant of a family (the hull sensitivity
+/// studies). The variant is generated when the case runs, written into its folder as `hull.csv`, and recorded
+/// in the case's configuration; a misspelt generator parameter is refused with the case's field.
+#[test]
+fn a_case_runs_its_own_hull_or_a_generated_variant() {
+    let wigley = std::fs::canonicalize("hulls/wigley.csv").unwrap();
+    let (study, dir) = fresh_study(
+        &format!("variants-{}", std::process::id()),
+        &format!(
+            "froude = [0.64, 0.64, 0.64]\n[resolution]\ndx = [4e-3, 4e-3, 4e-3]\n[config]\nuntil = 0.01\n\
+             [case.2.hull_variant]\ngenerator = \"athena\"\nflare = 0\n[case.3]\nhull = \"{}\"\n",
+            wigley.display()
+        ),
+    );
+    let out = dir.join("out");
+    assert_eq!(runner::run_cases(&study, &serial_options(&out)).unwrap().finished, 3);
+    let recs = runner::collect_finished(&study, &out);
+    let names: Vec<&str> = recs.iter().map(|r| r.result.hull.as_str()).collect();
+    assert_eq!(names, ["athena", "athena-variant", "wigley"]);
+    let written = std::fs::read_to_string(runner::case_dir(&out, &study.cases[1]).join("hull.csv")).unwrap();
+    assert!(written.contains("VARIANT of the athena approximation (flare=0)"), "{written}");
+    let manifest = std::fs::read_to_string(out.join("manifest.json")).unwrap();
+    assert!(manifest.contains("\"generator\": \"athena\""), "{manifest}");
+    let e = error_of(
+        &dir,
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[case.1.hull_variant]\ngenerator = \"athena\"\nflair = 3\n",
+    );
+    assert!(e.contains("case.1.hull_variant") && e.contains("flair"), "{e}");
+    let e = error_of(&dir, "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[case.1]\nhull = \"nowhere.csv\"\n");
+    assert!(e.contains("case.1.hull") && e.contains("not found"), "{e}");
+}

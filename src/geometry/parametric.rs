@@ -241,6 +241,36 @@ fn numeric_keys(v: &serde_json::Value) -> Vec<&str> {
         .unwrap_or_default()
 }
 
+/// Stations and points per station of the shipped generated hulls (`bowwave hull generate` defaults).
+pub const STATIONS: usize = 41;
+pub const POINTS: usize = 31;
+
+/// The generator of a family by name: `athena` or `alliance`.
+pub fn named(name: &str) -> anyhow::Result<ParametricSpec> {
+    match name {
+        "athena" => Ok(athena()),
+        "alliance" => Ok(alliance()),
+        other => anyhow::bail!("hull generator `{other}`: expected `athena` or `alliance`"),
+    }
+}
+
+/// A family member, `set` applied (`key=value`; a variant when not empty), calibrated to its Cb: the spec,
+/// the Cb reached, and its offsets at `stations` × `points`.
+pub fn generate(
+    name: &str,
+    set: &[String],
+    stations: usize,
+    points: usize,
+) -> anyhow::Result<(ParametricSpec, f64, crate::geometry::hull_file::HullOffsets)> {
+    let mut spec = named(name)?;
+    if !set.is_empty() {
+        spec = spec.with_overrides(set)?;
+    }
+    let cb = spec.calibrate(stations, points)?;
+    let offsets = spec.offsets(stations, points);
+    Ok((spec, cb, offsets))
+}
+
 /// R/V Athena (DTMB model 5365) approximation: L = 47 m, B = 6.9 m (between the 6.4–7.3 m of the sources),
 /// T = 1.63 m, wide immersed transom, round-bilge semi-planing form, Cb 0.46 (middle of 0.43–0.49).
 pub fn athena() -> ParametricSpec {

@@ -3,7 +3,7 @@
 //! parallel (`jobs`) or one after the other with every thread inside the case, an overall progress bar and one
 //! per running case, and a manifest (version, commit, resolved configuration, per-case timings).
 
-use super::study_file::{CaseSpec, Study};
+use super::study_file::{CaseHull, CaseSpec, Study};
 use crate::driver::{Ended, Halted};
 use crate::io::atomic::write_atomic;
 use crate::twodt::run::{run, TwoDtOptions, TwoDtResult};
@@ -79,12 +79,12 @@ pub struct Estimate {
 /// the published resolutions the packing would cost minutes per case (regression test
 /// `dry_run_does_not_pack_the_scenes`).
 pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
-    let hull = surface(study)?;
     study
         .cases
         .iter()
         .map(|spec| {
-            let scene = crate::twodt::scene::build(hull.clone(), &dry_run_config(spec))?;
+            let hull = case_surface(study, spec, None)?;
+            let scene = crate::twodt::scene::build(hull, &dry_run_config(spec))?;
             let g = &scene.geom;
             let h = scene.sim.kernel.h;
             let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * g.c0, 1.0);
@@ -106,9 +106,25 @@ pub fn dry_run_config(spec: &CaseSpec) -> crate::twodt::scene::TwoDtConfig {
     spec.config.unpacked()
 }
 
-/// The study's hull file read and interpolated into its surface.
-pub(crate) fn surface(study: &Study) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {
-    let offsets = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
+/// The hull surface of a case: its offsets file read, or its variant generated and calibrated (and, with
+/// `dir`, written there as `hull.csv`, the record of what ran).
+pub(crate) fn case_surface(
+    study: &Study,
+    spec: &CaseSpec,
+    dir: Option<&Path>,
+) -> anyhow::Result<Arc<crate::geometry::surface::HullSurface>> {
+    use crate::geometry::parametric;
+    let offsets = match &spec.hull {
+        CaseHull::File(f) => crate::geometry::hull_file::HullOffsets::read(&study.resolve(f))?,
+        CaseHull::Variant { generator, set } => {
+            let pairs = CaseHull::set_pairs(set);
+            let (_, _, h) = parametric::generate(generator, &pairs, parametric::STATIONS, parametric::POINTS)?;
+            if let Some(d) = dir {
+                write_atomic(&d.join("hull.csv"), h.to_csv().as_bytes())?;
+            }
+            h
+        }
+    };
     Ok(Arc::new(crate::geometry::surface::HullSurface::new(&offsets)))
 }
 
@@ -224,7 +240,6 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<Ran> {
     if todo.is_empty() {
         return Ok(Ran::default());
     }
-    let hull = surface(study)?;
     let multi = indicatif::MultiProgress::new();
     if !opts.progress {
         multi.set_draw_target(indicatif::ProgressDrawTarget::hidden());
@@ -253,7 +268,7 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<Ran> {
                     let Some(spec) = queue.lock().expect("lock").pop() else {
                         break;
                     };
-                    let r = pool.install(|| run_one(&hull, study, &spec, opts, &multi));
+                    let r = pool.install(|| run_one(study, &spec, opts, &multi));
                     match r {
                         Ok(None) => ran.lock().expect("lock").finished += 1,
                         Ok(Some(h)) => ran.lock().expect("lock").halted.push(h),
@@ -280,7 +295,6 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<Ran> {
 
 /// Runs one case into its folder and records it; `Some` when it halted with a checkpoint.
 fn run_one(
-    hull: &Arc<crate::geometry::surface::HullSurface>,
     study: &Study,
     spec: &CaseSpec,
     opts: &StudyOptions,
@@ -289,6 +303,7 @@ fn run_one(
     let dir = case_dir(&opts.out_dir, spec);
     // A stale record must not survive a re-run that is interrupted.
     let _ = std::fs::remove_file(dir.join("case.json"));
+    let hull = case_surface(study, spec, Some(&dir))?;
     let topts = TwoDtOptions {
         out_dir: dir.clone(),
         progress: opts.progress,
@@ -300,7 +315,7 @@ fn run_one(
             ..opts.checkpoint.clone()
         },
     };
-    let result = match run(hull.clone(), &spec.config, &topts)? {
+    let result = match run(hull, &spec.config, &topts)? {
         Ended::Ran(r) => r,
         Ended::Halted(h) => return Ok(Some(h)),
     };

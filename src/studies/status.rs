@@ -3,7 +3,7 @@
 //! again goes on from there), or not started. For sweeps whose cases run for hours, case by case, under a
 //! batch scheduler or over several sessions.
 
-use super::runner::{case_dir, finished, surface, CaseRecord};
+use super::runner::{case_dir, case_surface, finished, CaseRecord};
 use super::study_file::{CaseSpec, Study};
 use crate::twodt::run::CheckpointProgress;
 use std::path::Path;
@@ -31,7 +31,6 @@ pub struct CaseStatus {
 /// The state of every case of `study` in `out`, in study order. Only cases with a checkpoint build their
 /// scene (unpacked), to read where the checkpoint's section is.
 pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
-    let mut hull = None;
     study
         .cases
         .iter()
@@ -40,10 +39,7 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
             let state = if let Some(rec) = finished(out, spec) {
                 CaseState::Finished(Box::new(rec))
             } else if dir.join(crate::twodt::checkpoint::FILE).exists() {
-                let hull_surface = match &hull {
-                    Some(h) => std::sync::Arc::clone(h),
-                    None => hull.insert(surface(study)?).clone(),
-                };
+                let hull_surface = case_surface(study, spec, None)?;
                 match crate::twodt::run::progress(&hull_surface, &spec.config, &dir)? {
                     Some(p) => CaseState::InProgress(p),
                     None => CaseState::NotStarted,

@@ -27,7 +27,9 @@ pub struct StudyFile {
     /// `give_up_at`), except `fr` and `dx`, which `froude` and `[resolution]` set.
     #[serde(default)]
     pub config: toml::Table,
-    /// Options of one case, `[case.N]` for the N-th Froude number (1-based), over `[config]`.
+    /// Options of one case, `[case.N]` for the N-th Froude number (1-based), over `[config]`; besides the
+    /// 2D+t options, its own hull (`hull = "FILE"`) or a generated variant (`[case.N.hull_variant]`,
+    /// `generator = "athena"` and the generator parameters changed, e.g. `flare = 20`).
     #[serde(default)]
     pub case: BTreeMap<String, toml::Table>,
 }
@@ -65,12 +67,35 @@ impl Level {
     }
 }
 
+/// The hull of a case.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum CaseHull {
+    /// A hull offsets file, as written in the study file (relative to it, or absolute).
+    File(PathBuf),
+    /// A generated family member with some generator parameters changed (`bowwave hull generate NAME --set
+    /// KEY=VALUE`), calibrated to its Cb when the case runs and written into the case's folder as `hull.csv`.
+    Variant {
+        generator: String,
+        set: BTreeMap<String, f64>,
+    },
+}
+
+impl CaseHull {
+    /// The `--set` form of a variant's parameters.
+    pub fn set_pairs(set: &BTreeMap<String, f64>) -> Vec<String> {
+        set.iter().map(|(k, v)| format!("{k}={v}")).collect()
+    }
+}
+
 /// One resolved case of a study: everything needed to run it and to recognise it when resumed.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CaseSpec {
     /// 1-based position in the study.
     pub index: usize,
+    /// The case's hull: the study's `hull`, or its own `[case.N]` `hull` or `hull_variant`.
+    pub hull: CaseHull,
     /// The whole configuration of the case: the defaults, the study's `[config]`, the case's `[case.N]`,
     /// its Froude number and its spacing.
     pub config: TwoDtConfig,
@@ -129,12 +154,34 @@ impl Study {
         let offsets = crate::geometry::hull_file::HullOffsets::read(&hull_path)?;
         let draft = offsets.meta.draft_m / offsets.meta.length_m;
         let cases = resolve(&spec, draft).map_err(|(f, e)| field(&f, e))?;
-        Ok(Study {
+        let study = Study {
             file: path.to_path_buf(),
             spec,
             hull_path,
             cases,
-        })
+        };
+        for case in &study.cases {
+            if let CaseHull::File(f) = &case.hull {
+                let p = study.resolve(f);
+                if !p.is_file() {
+                    return Err(field(
+                        &format!("case.{}.hull", case.index),
+                        format!("a hull offsets file (relative to the study file); {} not found", p.display()),
+                    )
+                    .into());
+                }
+            }
+        }
+        Ok(study)
+    }
+
+    /// A path of the study file, resolved against the study file's folder.
+    pub fn resolve(&self, path: &Path) -> PathBuf {
+        if path.is_absolute() {
+            path.to_path_buf()
+        } else {
+            self.file.parent().unwrap_or(Path::new(".")).join(path)
+        }
     }
 }
 
@@ -193,7 +240,8 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             return Err((format!("config.{key}"), format!("no `{key}` here: `{field}` sets it")));
         }
     }
-    let mut overrides: Vec<Option<&toml::Table>> = vec![None; s.froude.len()];
+    let mut overrides: Vec<Option<toml::Table>> = vec![None; s.froude.len()];
+    let mut hulls: Vec<CaseHull> = vec![CaseHull::File(s.hull.clone()); s.froude.len()];
     for (k, table) in &s.case {
         let index = k.parse::<usize>().ok().filter(|i| (1..=s.froude.len()).contains(i));
         let Some(index) = index else {
@@ -210,11 +258,13 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
                 ));
             }
         }
+        let mut table = table.clone();
+        hulls[index - 1] = case_hull(&mut table, k, &s.hull)?;
         overrides[index - 1] = Some(table);
     }
     let mut cases = Vec::with_capacity(s.froude.len());
     for (k, (&fr, dx)) in s.froude.iter().zip(dxs).enumerate() {
-        let own = overrides[k];
+        let own = overrides[k].as_ref();
         let mut config = match own {
             Some(t) => base.with_overrides(t).map_err(|e| (format!("case.{}", k + 1), e))?,
             None => base.clone(),
@@ -244,7 +294,53 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
         if let Some(x) = config.give_up_at.filter(|&x| x <= 0.0) {
             return Err((field(ConfigOption::GiveUpAt), format!("an x/L value > 0, got {x}")));
         }
-        cases.push(CaseSpec { index: k + 1, config });
+        cases.push(CaseSpec {
+            index: k + 1,
+            hull: hulls[k].clone(),
+            config,
+        });
     }
     Ok(cases)
+}
+
+/// Takes a case's own hull out of its `[case.N]` table: `hull = "FILE"` or `[case.N.hull_variant]`; the
+/// study's hull when it has neither. The variant's generator and keys are checked here, its calibration is
+/// left to the run.
+fn case_hull(table: &mut toml::Table, k: &str, study_hull: &Path) -> Result<CaseHull, (String, String)> {
+    let file = table.remove("hull");
+    let variant = table.remove("hull_variant");
+    match (file, variant) {
+        (Some(_), Some(_)) => Err((
+            format!("case.{k}"),
+            "either `hull` or `hull_variant`, not both".into(),
+        )),
+        (Some(toml::Value::String(f)), None) => Ok(CaseHull::File(PathBuf::from(f))),
+        (Some(_), None) => Err((format!("case.{k}.hull"), "a hull offsets file name".into())),
+        (None, Some(toml::Value::Table(mut t))) => {
+            let field = format!("case.{k}.hull_variant");
+            let generator = match t.remove("generator") {
+                Some(toml::Value::String(g)) => g,
+                None => return Err((format!("{field}.generator"), "`athena` or `alliance`".into())),
+                Some(_) => return Err((format!("{field}.generator"), "`athena` or `alliance`".into())),
+            };
+            let mut set = BTreeMap::new();
+            for (key, v) in t {
+                let x = match v {
+                    toml::Value::Float(x) => x,
+                    toml::Value::Integer(i) => i as f64,
+                    _ => return Err((format!("{field}.{key}"), "a number".into())),
+                };
+                set.insert(key, x);
+            }
+            let spec = crate::geometry::parametric::named(&generator).map_err(|e| (format!("{field}.generator"), e.to_string()))?;
+            spec.with_overrides(&CaseHull::set_pairs(&set))
+                .map_err(|e| (field.clone(), e.to_string()))?;
+            Ok(CaseHull::Variant { generator, set })
+        }
+        (None, Some(_)) => Err((
+            format!("case.{k}.hull_variant"),
+            "a table: `generator = \"athena\"` and the parameters changed".into(),
+        )),
+        (None, None) => Ok(CaseHull::File(study_hull.to_path_buf())),
+    }
 }

@@ -40,10 +40,10 @@ pub enum HullAction {
         /// athena or alliance.
         hull: String,
         /// Number of stations, stem and stern included (4 to 2000; the shipped files have 41).
-        #[arg(long, default_value_t = 41)]
+        #[arg(long, default_value_t = bowwave::geometry::parametric::STATIONS)]
         stations: usize,
         /// Points per station, keel to deck (3 to 2000).
-        #[arg(long, default_value_t = 31)]
+        #[arg(long, default_value_t = bowwave::geometry::parametric::POINTS)]
         points: usize,
         /// Output file (default hulls/NAME.csv).
         #[arg(long)]
@@ -138,19 +138,9 @@ impl HullAction {
                 out,
                 set,
             } => {
-                use bowwave::geometry::parametric;
-                let mut spec = match hull.as_str() {
-                    "athena" => parametric::athena(),
-                    "alliance" => parametric::alliance(),
-                    other => anyhow::bail!("hull `{other}`: expected `athena` or `alliance`"),
-                };
-                if !set.is_empty() {
-                    spec = spec.with_overrides(&set)?;
-                }
                 check_count("--stations", stations, 4)?;
                 check_count("--points", points, 3)?;
-                let cb = spec.calibrate(stations, points)?;
-                let h = spec.offsets(stations, points);
+                let (spec, cb, h) = bowwave::geometry::parametric::generate(&hull, &set, stations, points)?;
                 let out = out.unwrap_or_else(|| PathBuf::from("hulls").join(format!("{hull}.csv")));
                 write_checked(&out, &h)?;
                 println!(
