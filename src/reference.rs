@@ -42,6 +42,14 @@ const FILES: &[(&str, &str)] = &[
         include_str!("../data/reference/buchner2002_damBreak_H600_P2_trixiparticles.csv"),
     ),
     (
+        "wedge_similarity_summary",
+        include_str!("../data/reference/zhao_faltinsen1993_wedge_similarity_summary.csv"),
+    ),
+    (
+        "wedge_similarity_pressure",
+        include_str!("../data/reference/zhao_faltinsen1993_wedge_similarity_pressure_sun2007fig2_6_digitised.csv"),
+    ),
+    (
         "trixi_p1_centre",
         include_str!("../data/reference/trixiparticles_wcsph_damBreak_P4_H600_80_400.csv"),
     ),

@@ -561,7 +561,10 @@ fn a_case_runs_its_own_hull_or_a_generated_variant() {
     let names: Vec<&str> = recs.iter().map(|r| r.result.hull.as_str()).collect();
     assert_eq!(names, ["athena", "athena-variant", "wigley"]);
     let written = std::fs::read_to_string(runner::case_dir(&out, &study.cases[1]).join("hull.csv")).unwrap();
-    assert!(written.contains("VARIANT of the athena approximation (flare=0)"), "{written}");
+    assert!(
+        written.contains("VARIANT of the athena approximation (flare=0)"),
+        "{written}"
+    );
     let manifest = std::fs::read_to_string(out.join("manifest.json")).unwrap();
     assert!(manifest.contains("\"generator\": \"athena\""), "{manifest}");
     let e = error_of(
@@ -569,6 +572,9 @@ fn a_case_runs_its_own_hull_or_a_generated_variant() {
         "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[case.1.hull_variant]\ngenerator = \"athena\"\nflair = 3\n",
     );
     assert!(e.contains("case.1.hull_variant") && e.contains("flair"), "{e}");
-    let e = error_of(&dir, "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[case.1]\nhull = \"nowhere.csv\"\n");
+    let e = error_of(
+        &dir,
+        "froude = [0.5]\n[resolution]\nlevel = \"coarse\"\n[case.1]\nhull = \"nowhere.csv\"\n",
+    );
     assert!(e.contains("case.1.hull") && e.contains("not found"), "{e}");
 }

@@ -166,7 +166,10 @@ impl Study {
                 if !p.is_file() {
                     return Err(field(
                         &format!("case.{}.hull", case.index),
-                        format!("a hull offsets file (relative to the study file); {} not found", p.display()),
+                        format!(
+                            "a hull offsets file (relative to the study file); {} not found",
+                            p.display()
+                        ),
                     )
                     .into());
                 }
@@ -310,10 +313,7 @@ fn case_hull(table: &mut toml::Table, k: &str, study_hull: &Path) -> Result<Case
     let file = table.remove("hull");
     let variant = table.remove("hull_variant");
     match (file, variant) {
-        (Some(_), Some(_)) => Err((
-            format!("case.{k}"),
-            "either `hull` or `hull_variant`, not both".into(),
-        )),
+        (Some(_), Some(_)) => Err((format!("case.{k}"), "either `hull` or `hull_variant`, not both".into())),
         (Some(toml::Value::String(f)), None) => Ok(CaseHull::File(PathBuf::from(f))),
         (Some(_), None) => Err((format!("case.{k}.hull"), "a hull offsets file name".into())),
         (None, Some(toml::Value::Table(mut t))) => {
@@ -332,7 +332,8 @@ fn case_hull(table: &mut toml::Table, k: &str, study_hull: &Path) -> Result<Case
                 };
                 set.insert(key, x);
             }
-            let spec = crate::geometry::parametric::named(&generator).map_err(|e| (format!("{field}.generator"), e.to_string()))?;
+            let spec = crate::geometry::parametric::named(&generator)
+                .map_err(|e| (format!("{field}.generator"), e.to_string()))?;
             spec.with_overrides(&CaseHull::set_pairs(&set))
                 .map_err(|e| (field.clone(), e.to_string()))?;
             Ok(CaseHull::Variant { generator, set })

@@ -30,6 +30,8 @@ pub struct WedgeSpec {
     pub penetration: f64,
     /// Fine spacing dx/L.
     pub dx: f64,
+    /// Sound speed / √(gL); `None`: the 2D+t scene's rule (10 × the expected largest speed from w_n).
+    pub c0: Option<f64>,
 }
 
 impl Default for WedgeSpec {
@@ -40,6 +42,7 @@ impl Default for WedgeSpec {
             slope: 0.5,
             penetration: 0.03,
             dx: 1.0e-3,
+            c0: None,
         }
     }
 }
@@ -48,6 +51,18 @@ impl Default for WedgeSpec {
 const X_TOUCH: f64 = 0.01;
 
 impl WedgeSpec {
+    /// The entry speed V = U × slope.
+    pub fn entry_speed(&self) -> f64 {
+        self.fr * self.slope
+    }
+
+    /// A sound speed that keeps the spray root below Mach 0.1: 10 × Wagner's root speed ċ = V π/(2 tanβ)
+    /// (Faltinsen 1990, eq. 9.17). The scene's own rule follows w_n ≈ V cosβ, which at 10°–20° leaves the
+    /// root, 4–9 V fast, at Mach 0.2–0.4.
+    pub fn mach_safe_c0(&self) -> f64 {
+        10.0 * self.entry_speed() * std::f64::consts::FRAC_PI_2 / self.tan_beta()
+    }
+
     fn tan_beta(&self) -> f64 {
         self.deadrise_deg.to_radians().tan()
     }
@@ -95,7 +110,7 @@ impl WedgeSpec {
 }
 
 /// One sample of a wedge run.
-#[derive(Clone, Copy, Debug, serde::Serialize)]
+#[derive(Clone, Debug, serde::Serialize)]
 pub struct WedgeSample {
     /// Penetration depth V t.
     pub penetration: f64,
@@ -104,7 +119,17 @@ pub struct WedgeSample {
     pub pileup_over_vt: f64,
     /// Vertical force on the half wedge / (ρ V³ t), from the impulse 2 ∫F dt / (ρ V³ t²).
     pub force_coefficient: f64,
+    /// The pressure along the face, Cp = (p − ρ g max(−z, 0)) / (½ ρ V²) (the dynamic part: the similarity
+    /// solution has no gravity), one spacing into the fluid, averaged over the last quarter of the interval
+    /// in bins of z/(V t) of width [`PROFILE_BIN`]: (z/(Vt) at the bin's centre, Cp), bins with samples only.
+    pub cp_profile: Vec<(f64, f64)>,
+    /// The profile's largest Cp and its z/(V t).
+    pub cp_max: f64,
+    pub z_cpmax_over_vt: f64,
 }
+
+/// Width of the bins of z/(V t) of the pressure profile.
+pub const PROFILE_BIN: f64 = 0.025;
 
 /// Result of the comparison.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -117,6 +142,37 @@ pub struct WedgeComparison {
     pub wagner_pileup_over_vt: f64,
     /// Wagner, half wedge: F/(ρ V³ t) = (π³/8) cot²β.
     pub wagner_force_coefficient: f64,
+    /// Wagner: Cp_max = (π²/4) cot²β at the spray root z/(V t) = π/2 − 1 (Faltinsen 1990, eq. 9.18).
+    pub wagner_cp_max: f64,
+    /// The exact similarity solution at this deadrise, where a citable value exists.
+    pub similarity: Option<Similarity>,
+}
+
+/// The Zhao & Faltinsen (1993) similarity solution of constant-speed wedge entry without gravity
+/// (`data/reference/zhao_faltinsen1993_wedge_similarity_summary.csv`; Iafrati 2013, Table 1).
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+pub struct Similarity {
+    pub cp_max: f64,
+    /// z/(V t) of the pressure peak (calm level 0, apex −1).
+    pub z_cpmax_over_vt: f64,
+    /// Vertical force on the half wedge / (ρ V³ t): half the integrated force of both faces (20° and 30°
+    /// only).
+    pub force_coefficient: Option<f64>,
+}
+
+impl Similarity {
+    /// The reference at `deadrise_deg`, if the table has it.
+    pub fn at(deadrise_deg: f64) -> Option<Similarity> {
+        let t = crate::reference::load("wedge_similarity_summary");
+        let beta = crate::reference::named(&t, "deadrise_deg");
+        let k = beta.iter().position(|b| (b - deadrise_deg).abs() < 1e-9)?;
+        let force = crate::reference::named(&t, "F_over_rho_V3_t_DERIVED")[k];
+        Some(Similarity {
+            cp_max: crate::reference::named(&t, "cp_max_READ")[k],
+            z_cpmax_over_vt: crate::reference::named(&t, "z_cpmax_over_Vt_READ")[k],
+            force_coefficient: force.is_finite().then_some(0.5 * force),
+        })
+    }
 }
 
 /// Runs the wedge in 2D+t (`rigid = false`) or as a rigid wedge, sampling at the given penetrations.
@@ -128,6 +184,7 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         dx: Some(spec.dx),
         coarse_ratio: 1.0,
         until: Until::X(x_end),
+        c0: spec.c0,
         ..Default::default()
     };
     let mut scene = build(hull, &cfg)?;
@@ -175,6 +232,7 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         impulse: 0.0,
         last: None,
         moments: (0.0, 0.0),
+        profile: vec![],
         out: vec![],
     };
     match drive(&mut scene.sim, &mut [&mut sampler])? {
@@ -200,6 +258,8 @@ struct WedgeSampler {
     impulse: f64,
     last: Option<(f64, f64)>,
     moments: (f64, f64),
+    /// Sums and counts of Cp per bin of z/(V t) from −1, over the last quarter of the interval.
+    profile: Vec<(f64, u32)>,
     out: Vec<WedgeSample>,
 }
 
@@ -215,7 +275,7 @@ impl Observer<Simulation<2>> for WedgeSampler {
                 self.impulse += 0.5 * (f + f0) * (t - t0);
                 self.last = Some((t, f));
                 if t > 0.75 * pen / v {
-                    let (a, b) = pressure_moments(sim, self.dx, v * t, &self.dir, &self.n);
+                    let (a, b) = pressure_moments(sim, self.dx, v * t, &self.dir, &self.n, v, &mut self.profile);
                     self.moments.0 += a;
                     self.moments.1 += b;
                 }
@@ -231,10 +291,23 @@ impl Observer<Simulation<2>> for WedgeSampler {
             // The centre of pressure s_cp gives the Wagner-equivalent wetted length c = (π/2) s_cp (for
             // p ∝ 1/√(c² − s²)), and the pile-up height c sinβ above the apex.
             let c_over_vt = std::f64::consts::FRAC_PI_2 * m1 / m0.max(1e-300);
+            let cp_profile: Vec<(f64, f64)> = std::mem::take(&mut self.profile)
+                .into_iter()
+                .enumerate()
+                .filter(|(_, (_, n))| *n > 0)
+                .map(|(k, (sum, n))| (-1.0 + (k as f64 + 0.5) * PROFILE_BIN, sum / n as f64))
+                .collect();
+            let (z_cpmax_over_vt, cp_max) = cp_profile.iter().copied().fold(
+                (f64::NAN, f64::NEG_INFINITY),
+                |best, b| if b.1 > best.1 { b } else { best },
+            );
             self.out.push(WedgeSample {
                 penetration: v * t,
                 pileup_over_vt: c_over_vt * self.dir.y,
                 force_coefficient: 2.0 * self.impulse / (v * v * v * t * t),
+                cp_profile,
+                cp_max,
+                z_cpmax_over_vt,
             });
         }
         Ok(if self.targets.is_empty() {
@@ -246,17 +319,38 @@ impl Observer<Simulation<2>> for WedgeSampler {
 }
 
 /// Zeroth and first moments (∫p dσ, ∫p σ dσ with σ = s/(V t)) of the pressure along the wedge side, one
-/// spacing into the fluid, from the apex up to s = 3 V t / sinβ; `vt` is the penetration.
-fn pressure_moments(sim: &Simulation<2>, dx: f64, vt: f64, dir: &V2, n: &V2) -> (f64, f64) {
+/// spacing into the fluid, from the apex up to s = 3 V t / sinβ; `vt` is the penetration. Each sample's Cp
+/// (the dynamic part, see [`WedgeSample::cp_profile`]) is added to its bin of z/(V t) in `profile`.
+fn pressure_moments(
+    sim: &Simulation<2>,
+    dx: f64,
+    vt: f64,
+    dir: &V2,
+    n: &V2,
+    v: f64,
+    profile: &mut Vec<(f64, u32)>,
+) -> (f64, f64) {
     let ds = 0.25 * dx;
     let (mut m0, mut m1) = (0.0, 0.0);
     let steps = (3.0 * vt / (dir.y * ds)) as usize + 1;
     for k in 0..steps {
         let s = (k as f64 + 0.5) * ds;
         let p = V2::new(0.0, -vt) + dir * s + n * dx;
-        let pr = sim.sensor_pressure_at(&p).max(0.0);
+        let raw = sim.sensor_pressure_at(&p);
+        let pr = raw.max(0.0);
         m0 += pr * ds / vt;
         m1 += pr * (s / vt) * ds / vt;
+        // Scene units: ρ0 = 1, g = 1, the calm level at z = 0; binned by the face point's z/(V t).
+        let zeta = (s * dir.y - vt) / vt;
+        let bin = ((zeta + 1.0) / PROFILE_BIN).floor();
+        if raw.is_finite() && bin >= 0.0 {
+            let bin = bin as usize;
+            if profile.len() <= bin {
+                profile.resize(bin + 1, (0.0, 0));
+            }
+            profile[bin].0 += 2.0 * (raw - (-p.y).max(0.0)) / (v * v);
+            profile[bin].1 += 1;
+        }
     }
     (m0, m1)
 }
@@ -271,11 +365,49 @@ pub fn compare(spec: &WedgeSpec, at: &[f64]) -> anyhow::Result<WedgeComparison> 
         rigid: run_wedge(spec, true, at)?,
         wagner_pileup_over_vt: std::f64::consts::FRAC_PI_2,
         wagner_force_coefficient: std::f64::consts::PI.powi(3) / 8.0 * cot * cot,
+        wagner_cp_max: std::f64::consts::PI.powi(2) / 4.0 * cot * cot,
+        similarity: Similarity::at(spec.deadrise_deg),
     })
 }
 
 /// Prints the comparison as a table with the differences.
 pub fn print(c: &WedgeComparison) {
+    print_wagner(c);
+    print_similarity(c);
+}
+
+/// The comparison with the similarity solution: force, Cp_max and its height, for both runs.
+pub fn print_similarity(c: &WedgeComparison) {
+    let Some(sim) = c.similarity else {
+        println!("  (no similarity solution on record at β = {}°)", c.spec_deadrise_deg);
+        return;
+    };
+    let force = sim.force_coefficient.map_or("–".to_string(), |f| format!("{f:.3}"));
+    println!(
+        "  similarity solution (Zhao & Faltinsen 1993): half-wedge force {force}, Cp_max {:.3} at z/(Vt) {:.3}; Wagner Cp_max {:.3}",
+        sim.cp_max, sim.z_cpmax_over_vt, c.wagner_cp_max
+    );
+    println!("  Vt/L    run    force   vs sim    Cp_max  vs sim    z(Cp_max)/(Vt)  vs sim");
+    for (name, runs) in [("2D+t", &c.twodt), ("rigid", &c.rigid)] {
+        for a in runs.iter() {
+            let f = sim.force_coefficient.map_or("–".to_string(), |f| {
+                format!("{:+.1}%", 100.0 * (a.force_coefficient / f - 1.0))
+            });
+            println!(
+                "  {:.4}  {name:<5}  {:.3}   {f:>7}   {:.3}  {:+.1}%   {:.3}           {:+.3}",
+                a.penetration,
+                a.force_coefficient,
+                a.cp_max,
+                100.0 * (a.cp_max / sim.cp_max - 1.0),
+                a.z_cpmax_over_vt,
+                a.z_cpmax_over_vt - sim.z_cpmax_over_vt,
+            );
+        }
+    }
+}
+
+/// The 2D+t run against the rigid wedge, and both against Wagner.
+pub fn print_wagner(c: &WedgeComparison) {
     println!(
         "wedge β = {}°, dx/L = {:.2e}; Wagner: pile-up z/(Vt) = {:.3}, half-wedge force F/(ρV³t) = {:.3}",
         c.spec_deadrise_deg, c.dx, c.wagner_pileup_over_vt, c.wagner_force_coefficient
@@ -295,4 +427,38 @@ pub fn print(c: &WedgeComparison) {
             100.0 * (a.force_coefficient / c.wagner_force_coefficient - 1.0),
         );
     }
+}
+
+/// The comparisons' rows as CSV: deadrise, dx, run (2dt or rigid), penetration, pile-up, force, Cp_max and
+/// its height, then the similarity solution's and Wagner's values (empty where there is none).
+pub fn csv(comparisons: &[WedgeComparison]) -> String {
+    let mut out = String::from(
+        "deadrise_deg,dx_over_l,run,penetration_over_l,pileup_over_vt,force_coefficient,cp_max,z_cpmax_over_vt,\
+         sim_force_coefficient,sim_cp_max,sim_z_cpmax_over_vt,wagner_force_coefficient,wagner_cp_max,wagner_pileup_over_vt\n",
+    );
+    let opt = |v: Option<f64>| v.map_or(String::new(), |x| x.to_string());
+    for c in comparisons {
+        let sim = c.similarity;
+        for (name, runs) in [("2dt", &c.twodt), ("rigid", &c.rigid)] {
+            for a in runs {
+                out += &format!(
+                    "{},{},{name},{},{},{},{},{},{},{},{},{},{},{}\n",
+                    c.spec_deadrise_deg,
+                    c.dx,
+                    a.penetration,
+                    a.pileup_over_vt,
+                    a.force_coefficient,
+                    a.cp_max,
+                    a.z_cpmax_over_vt,
+                    opt(sim.and_then(|s| s.force_coefficient)),
+                    opt(sim.map(|s| s.cp_max)),
+                    opt(sim.map(|s| s.z_cpmax_over_vt)),
+                    c.wagner_force_coefficient,
+                    c.wagner_cp_max,
+                    c.wagner_pileup_over_vt
+                );
+            }
+        }
+    }
+    out
 }

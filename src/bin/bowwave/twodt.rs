@@ -77,23 +77,102 @@ impl TwodtArgs {
 
 #[derive(Args)]
 pub struct WedgeArgs {
-    /// Particle spacing dx/L (the penetration at the end is 0.03 L).
-    #[arg(long, default_value_t = 5e-4)]
-    pub dx: f64,
-    /// Deadrise angle in degrees.
-    #[arg(long, default_value_t = 30.0)]
-    pub deadrise: f64,
+    /// Particle spacings dx/L, comma separated (the penetration at the end is 0.03 L); three in a constant
+    /// ratio give the observed order of each error.
+    #[arg(long, value_delimiter = ',', default_values_t = vec![5e-4])]
+    pub dx: Vec<f64>,
+    /// Deadrise angles in degrees, comma separated (the similarity solution is on record at 10, 20 and 30).
+    #[arg(long, value_delimiter = ',', default_values_t = vec![30.0])]
+    pub deadrise: Vec<f64>,
+    /// Sound speed: `root` (10 × Wagner's spray-root speed V π/(2 tanβ), Mach ≤ 0.1 at the root) or `scene`
+    /// (the 2D+t scene's rule, from w_n: fast but compressible at the root below 30°).
+    #[arg(long, default_value = "root")]
+    pub c0: String,
+    /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
 }
 
 impl WedgeArgs {
     pub fn run(self) -> anyhow::Result<()> {
-        let spec = twodt::wedge::WedgeSpec {
-            dx: self.dx,
-            deadrise_deg: self.deadrise,
-            ..Default::default()
-        };
-        let c = twodt::wedge::compare(&spec, &[0.01, 0.02, 0.03])?;
-        twodt::wedge::print(&c);
+        anyhow::ensure!(
+            self.c0 == "root" || self.c0 == "scene",
+            "--c0 {}: expected `root` or `scene`",
+            self.c0
+        );
+        let mut all = vec![];
+        for &beta in &self.deadrise {
+            anyhow::ensure!(
+                beta > 0.0 && beta < 90.0,
+                "--deadrise {beta}: expected an angle in (0, 90) degrees"
+            );
+            for &dx in &self.dx {
+                let mut spec = twodt::wedge::WedgeSpec {
+                    dx,
+                    deadrise_deg: beta,
+                    ..Default::default()
+                };
+                if self.c0 == "root" {
+                    spec.c0 = Some(spec.mach_safe_c0());
+                }
+                let clock = std::time::Instant::now();
+                let c = twodt::wedge::compare(&spec, &[0.01, 0.02, 0.03])?;
+                twodt::wedge::print(&c);
+                println!("  ({:.1} s for both runs)", clock.elapsed().as_secs_f64());
+                all.push(c);
+            }
+        }
+        if self.dx.len() == 3 {
+            print_orders(&all, &self.dx);
+        }
+        if let Some(out) = self.out {
+            bowwave::io::atomic::write_atomic(&out.join("wedge.csv"), twodt::wedge::csv(&all).as_bytes())?;
+            let mut profiles = String::from("deadrise_deg,dx_over_l,run,penetration_over_l,z_over_vt,cp\n");
+            for c in &all {
+                for (name, runs) in [("2dt", &c.twodt), ("rigid", &c.rigid)] {
+                    for a in runs {
+                        for (z, cp) in &a.cp_profile {
+                            profiles +=
+                                &format!("{},{},{name},{},{z},{cp}\n", c.spec_deadrise_deg, c.dx, a.penetration);
+                        }
+                    }
+                }
+            }
+            bowwave::io::atomic::write_atomic(&out.join("wedge_profiles.csv"), profiles.as_bytes())?;
+            println!("wrote {} and wedge_profiles.csv", out.join("wedge.csv").display());
+        }
         Ok(())
+    }
+}
+
+/// The observed order (appendix C, eq. C.2) of the force and Cp_max at the last penetration, per deadrise,
+/// over three spacings, with the error of the finest against the similarity solution.
+fn print_orders(all: &[twodt::wedge::WedgeComparison], dx: &[f64]) {
+    use bowwave::methods::convergence::order_c2;
+    let rho = dx[0] / dx[1];
+    println!("orders over dx/L {dx:?} (ratio {rho:.3}), at the last penetration:");
+    for c3 in all.chunks(3) {
+        for (name, rigid) in [("2D+t", false), ("rigid", true)] {
+            let s: Vec<_> = c3
+                .iter()
+                .filter_map(|c| if rigid { c.rigid.last() } else { c.twodt.last() }.cloned())
+                .collect();
+            if s.len() < 3 {
+                continue;
+            }
+            let of = |f: fn(&twodt::wedge::WedgeSample) -> f64| order_c2(f(&s[0]), f(&s[1]), f(&s[2]), rho);
+            println!(
+                "  β {}° {name}: force {:.3} {:.3} {:.3} (order {:.2}), Cp_max {:.2} {:.2} {:.2} (order {:.2})",
+                c3[0].spec_deadrise_deg,
+                s[0].force_coefficient,
+                s[1].force_coefficient,
+                s[2].force_coefficient,
+                of(|a| a.force_coefficient),
+                s[0].cp_max,
+                s[1].cp_max,
+                s[2].cp_max,
+                of(|a| a.cp_max),
+            );
+        }
     }
 }
