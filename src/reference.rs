@@ -115,9 +115,32 @@ pub fn interp(xs: &[f64], ys: &[f64], x: f64) -> Option<f64> {
 mod tests {
     use super::*;
 
+    /// Tables that carry text beside their numbers (provenance tags, notes, empty cells where a source has no
+    /// value): the columns the code reads, and the rows there must be at least.
+    const MIXED: &[(&str, &[&str], usize)] = &[
+        (
+            "wedge_similarity_summary",
+            &[
+                "deadrise_deg",
+                "cp_max_READ",
+                "z_cpmax_over_Vt_READ",
+                "wagner_cp_max_DERIVED",
+            ],
+            3,
+        ),
+        ("wedge_similarity_pressure", &["deadrise_deg", "z_over_Vt", "cp"], 300),
+    ];
+
     #[test]
     fn all_embedded_references_parse() {
-        for (n, _) in FILES {
+        for (n, cols, rows) in MIXED {
+            let t = load(n);
+            assert!(t.rows.len() >= *rows, "{n}: {} rows", t.rows.len());
+            for c in *cols {
+                assert!(named(&t, c).iter().all(|x| x.is_finite()), "{n}: {c} has non-numbers");
+            }
+        }
+        for (n, _) in FILES.iter().filter(|(n, _)| MIXED.iter().all(|m| m.0 != *n)) {
             let t = load(n);
             assert!(t.rows.len() > 5, "{n}");
             assert!(

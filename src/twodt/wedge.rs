@@ -462,3 +462,30 @@ pub fn csv(comparisons: &[WedgeComparison]) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn similarity_reference_reads_as_transcribed() {
+        let s30 = Similarity::at(30.0).unwrap();
+        assert_eq!((s30.cp_max, s30.z_cpmax_over_vt), (6.927, 0.4243));
+        assert_eq!(s30.force_coefficient, Some(0.5 * 14.17));
+        assert_eq!(Similarity::at(20.0).unwrap().force_coefficient, Some(0.5 * 42.94));
+        assert_eq!(
+            Similarity::at(10.0).unwrap().force_coefficient,
+            None,
+            "no force on record at 10°"
+        );
+        assert!(Similarity::at(45.0).is_none());
+    }
+
+    /// The spray root's speed rule: 10 × V π/(2 tanβ); at 30°, V = 0.5: 27.2.
+    #[test]
+    fn mach_safe_sound_speed_follows_the_spray_root() {
+        let w = WedgeSpec::default();
+        let expected = 10.0 * 0.5 * std::f64::consts::FRAC_PI_2 / 30f64.to_radians().tan();
+        assert!((w.mach_safe_c0() - expected).abs() < 1e-12);
+    }
+}

@@ -139,6 +139,9 @@ impl WedgeArgs {
                 }
             }
             bowwave::io::atomic::write_atomic(&out.join("wedge_profiles.csv"), profiles.as_bytes())?;
+            for &beta in &self.deadrise {
+                plot_profiles(&all, beta, &out)?;
+            }
             println!("wrote {} and wedge_profiles.csv", out.join("wedge.csv").display());
         }
         Ok(())
@@ -175,4 +178,44 @@ fn print_orders(all: &[twodt::wedge::WedgeComparison], dx: &[f64]) {
             );
         }
     }
+}
+
+/// `wedge_cp_BETA.png`: Cp along the face against z/(V t) at the last penetration of every spacing (2D+t
+/// runs), beside the similarity solution's digitised curve where there is one.
+fn plot_profiles(all: &[twodt::wedge::WedgeComparison], beta: f64, out: &std::path::Path) -> anyhow::Result<()> {
+    use bowwave::io::plot::{line_plot, Series, Style};
+    let mut series = vec![];
+    let t = bowwave::reference::load("wedge_similarity_pressure");
+    let (b, z, cp) = (
+        bowwave::reference::named(&t, "deadrise_deg"),
+        bowwave::reference::named(&t, "z_over_Vt"),
+        bowwave::reference::named(&t, "cp"),
+    );
+    let exact: Vec<(f64, f64)> = (0..b.len())
+        .filter(|&k| (b[k] - beta).abs() < 1e-9)
+        .map(|k| (z[k], cp[k]))
+        .collect();
+    if !exact.is_empty() {
+        series.push(Series {
+            name: "similarity (Zhao & Faltinsen 1993)".into(),
+            points: exact,
+            style: Style::Line,
+        });
+    }
+    for c in all.iter().filter(|c| (c.spec_deadrise_deg - beta).abs() < 1e-9) {
+        if let Some(a) = c.twodt.last() {
+            series.push(Series {
+                name: format!("2D+t dx/L {:.1e}, Vt = {:.0} dx", c.dx, a.penetration / c.dx),
+                points: a.cp_profile.clone(),
+                style: Style::LineMarkers,
+            });
+        }
+    }
+    line_plot(
+        &out.join(format!("wedge_cp_{beta}.png")),
+        &format!("wedge {beta}°: pressure along the face at the last penetration"),
+        "z/(Vt)",
+        "Cp = (p − ρg(−z)) / (½ρV²)",
+        &series,
+    )
 }
