@@ -93,7 +93,7 @@ fn martin_moyce_column_height_follows_table_6() {
 /// The whole jet on a flat wall (`jet-plate`, no floor): the wall force within 2 % of ρU²h and every sensor's
 /// mean Cp within 0.03 of Taylor's free-streamline solution. Measured at b/dx 10: force 0.15 %, Cp 0.0195
 /// (the stagnation sensors, 0.98 against 1.00). Without the floor the stagnation pressure is right: the
-/// excess of `jet-wall` comes from its floor's ghosts (`jet-floor`, docs/reference/method.md check 11).
+/// excess of `jet-wall` comes from its floor's ghosts (`jet-floor`, studies/results/validation/LOG.md check 11).
 #[test]
 fn jet_on_a_flat_wall_has_the_free_streamline_pressure() {
     let r = run_case("jet-plate", 10.0, None);
@@ -121,7 +121,7 @@ fn run_with_image_ghosts(name: &str, res: f64) -> bowwave::cases::run::RunResult
 /// Measured at b/dx 10: jet-floor stagnation 0.983 (fixed ghosts: 2.79); jet-wall corner 0.994 (fixed:
 /// 1.70), y/h ≥ 0.3 within 0.012 (fixed: 0.23). At b/dx 20 `bowwave validate jet-floor --ghosts images`
 /// passes every sensor (0.014); at b/dx 10 its worst sensor is 0.033 off, so only the stagnation one is held
-/// here (docs/reference/method.md check 12).
+/// here (studies/results/validation/LOG.md check 12).
 #[test]
 fn flow_leaving_a_floor_of_image_ghosts_keeps_the_stagnation_pressure() {
     let r = run_with_image_ghosts("jet-floor", 10.0);

@@ -35,7 +35,7 @@ pub enum GhostKind {
     /// their particle's values (the standard ghosts of Colagrossi & Landrini 2003, J. Comput. Phys.
     /// 191:448). The corner quadrants keep their fixed point-mirror ghosts (Fig. 7.3). For tanks: under a
     /// stagnation point that the flow leaves along the wall's normal, the fixed lattice over-pressures (the
-    /// `jet-floor` case: Cp 2.8 against 1.0), the images do not (docs/reference/method.md, check 12). Meant for walls of
+    /// `jet-floor` case: Cp 2.8 against 1.0), the images do not (studies/results/validation/LOG.md, check 12). Meant for walls of
     /// straight sides meeting at corners (turns above 30°), such as tanks: at a gentle bend two sides' images
     /// would overlap or leave a gap.
     Images,

@@ -89,20 +89,28 @@ impl Scene {
     /// section in its later stages (with Wigley's full-depth stem that one step gave 1.24e-4 M g D, which was
     /// reported as what the settling left; regression test `settling_energy_is_measured_before_the_ship_starts`).
     pub fn settle(&mut self) -> anyhow::Result<f64> {
+        use crate::driver::{drive, Flow, Outcome, Watch};
         let kinetic = |sim: &Simulation<2>| {
             crate::sph::diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic
         };
+        let t_start = self.profile.t_start;
         let mut ke = kinetic(&self.sim);
-        while self.sim.time < self.profile.t_start {
-            self.sim.step().map_err(|b| anyhow::anyhow!("settling blew up: {b}"))?;
-            for v in self.sim.fluid.vel.iter_mut() {
-                *v *= SETTLE_DAMPING;
+        let steps0 = self.sim.steps;
+        let mut damped = Watch(|sim: &mut Simulation<2>| {
+            if sim.steps > steps0 {
+                for v in sim.fluid.vel.iter_mut() {
+                    *v *= SETTLE_DAMPING;
+                }
+                if sim.time <= t_start {
+                    ke = kinetic(sim);
+                }
             }
-            if self.sim.time <= self.profile.t_start {
-                ke = kinetic(&self.sim);
-            }
+            Ok(if sim.time >= t_start { Flow::Stop } else { Flow::Step })
+        });
+        match drive(&mut self.sim, &mut [&mut damped])? {
+            Outcome::BlewUp(b) => anyhow::bail!("settling blew up: {b}"),
+            Outcome::Finished | Outcome::Halted(_) => Ok(ke),
         }
-        Ok(ke)
     }
 }
 

@@ -201,7 +201,7 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
         None,
     ));
     // Another code at P1's centre: TrixiParticles' own reference runs read an 8.4 mm sensor there (their P4).
-    // Reported, no tolerance: it tells whether our slow rise at P1 is ours alone (docs/reference/method.md, check 14).
+    // Reported, no tolerance: it tells whether our slow rise at P1 is ours alone (studies/results/validation/LOG.md, check 14).
     if let Some(pc) = r.series.column("pstar_P1c") {
         let (tres, tt, tp) = trixi_p1_centre(res);
         out.push(check(

@@ -149,7 +149,7 @@ pub fn jet_plate(r: &RunResult) -> Vec<Check> {
 
 /// Two jets meeting over a floor (`jet-floor`): every sensor's mean Cp on the symmetry plane within
 /// [`JET_PLATE_CP_TOLERANCE`] of Taylor's solution, as on the flat wall, and the stagnation sensor reported.
-/// It fails: the floor's ghosts under the stagnation point over-pressure it (docs/reference/method.md, check 11). No
+/// It fails: the floor's ghosts under the stagnation point over-pressure it (studies/results/validation/LOG.md, check 11). No
 /// force check: the plane x = 0 is not a wall.
 pub fn jet_floor(r: &RunResult) -> Vec<Check> {
     let (_, _, sensors) = jet_wall_means(r);

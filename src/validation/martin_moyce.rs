@@ -37,7 +37,7 @@ fn errors_at_reference_times(
 /// Window of T = √2 t √(g/a) over which the front's speed is compared (reported only): Table 2's times from
 /// 1.19 to 2.32. Chosen after seeing where our lead is gained: at T = 0.41 our front and theirs agree within
 /// 0.01 a, at 0.84 ours is 0.16 a ahead and from 1.19 on 0.24–0.34 a, so a speed read after T ≈ 1.2 is what
-/// the release no longer sets (docs/reference/method.md, "Two checks for the owner to decide").
+/// the release no longer sets (studies/results/validation/LOG.md, "Two checks for the owner to decide").
 const MM_SPEED_WINDOW: (f64, f64) = (1.1, 2.5);
 
 /// Least-squares slope of y against x.
