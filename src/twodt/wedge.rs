@@ -429,38 +429,53 @@ pub fn print_wagner(c: &WedgeComparison) {
     }
 }
 
+/// One row of `wedge.csv`.
+#[derive(serde::Serialize)]
+struct CsvRow<'a> {
+    deadrise_deg: f64,
+    dx_over_l: f64,
+    run: &'a str,
+    penetration_over_l: f64,
+    pileup_over_vt: f64,
+    force_coefficient: f64,
+    cp_max: f64,
+    z_cpmax_over_vt: f64,
+    sim_force_coefficient: Option<f64>,
+    sim_cp_max: Option<f64>,
+    sim_z_cpmax_over_vt: Option<f64>,
+    wagner_force_coefficient: f64,
+    wagner_cp_max: f64,
+    wagner_pileup_over_vt: f64,
+}
+
 /// The comparisons' rows as CSV: deadrise, dx, run (2dt or rigid), penetration, pile-up, force, Cp_max and
 /// its height, then the similarity solution's and Wagner's values (empty where there is none).
-pub fn csv(comparisons: &[WedgeComparison]) -> String {
-    let mut out = String::from(
-        "deadrise_deg,dx_over_l,run,penetration_over_l,pileup_over_vt,force_coefficient,cp_max,z_cpmax_over_vt,\
-         sim_force_coefficient,sim_cp_max,sim_z_cpmax_over_vt,wagner_force_coefficient,wagner_cp_max,wagner_pileup_over_vt\n",
-    );
-    let opt = |v: Option<f64>| v.map_or(String::new(), |x| x.to_string());
+pub fn csv(comparisons: &[WedgeComparison]) -> anyhow::Result<String> {
+    let mut w = csv::Writer::from_writer(vec![]);
     for c in comparisons {
         let sim = c.similarity;
-        for (name, runs) in [("2dt", &c.twodt), ("rigid", &c.rigid)] {
-            for a in runs {
-                out += &format!(
-                    "{},{},{name},{},{},{},{},{},{},{},{},{},{},{}\n",
-                    c.spec_deadrise_deg,
-                    c.dx,
-                    a.penetration,
-                    a.pileup_over_vt,
-                    a.force_coefficient,
-                    a.cp_max,
-                    a.z_cpmax_over_vt,
-                    opt(sim.and_then(|s| s.force_coefficient)),
-                    opt(sim.map(|s| s.cp_max)),
-                    opt(sim.map(|s| s.z_cpmax_over_vt)),
-                    c.wagner_force_coefficient,
-                    c.wagner_cp_max,
-                    c.wagner_pileup_over_vt
-                );
+        for (run, samples) in [("2dt", &c.twodt), ("rigid", &c.rigid)] {
+            for a in samples {
+                w.serialize(CsvRow {
+                    deadrise_deg: c.spec_deadrise_deg,
+                    dx_over_l: c.dx,
+                    run,
+                    penetration_over_l: a.penetration,
+                    pileup_over_vt: a.pileup_over_vt,
+                    force_coefficient: a.force_coefficient,
+                    cp_max: a.cp_max,
+                    z_cpmax_over_vt: a.z_cpmax_over_vt,
+                    sim_force_coefficient: sim.and_then(|s| s.force_coefficient),
+                    sim_cp_max: sim.map(|s| s.cp_max),
+                    sim_z_cpmax_over_vt: sim.map(|s| s.z_cpmax_over_vt),
+                    wagner_force_coefficient: c.wagner_force_coefficient,
+                    wagner_cp_max: c.wagner_cp_max,
+                    wagner_pileup_over_vt: c.wagner_pileup_over_vt,
+                })?;
             }
         }
     }
-    out
+    Ok(String::from_utf8(w.into_inner()?)?)
 }
 
 #[cfg(test)]

@@ -126,7 +126,7 @@ impl WedgeArgs {
             print_orders(&all, &self.dx);
         }
         if let Some(out) = self.out {
-            bowwave::io::atomic::write_atomic(&out.join("wedge.csv"), twodt::wedge::csv(&all).as_bytes())?;
+            bowwave::io::atomic::write_atomic(&out.join("wedge.csv"), twodt::wedge::csv(&all)?.as_bytes())?;
             let mut profiles = String::from("deadrise_deg,dx_over_l,run,penetration_over_l,z_over_vt,cp\n");
             for c in &all {
                 for (name, runs) in [("2dt", &c.twodt), ("rigid", &c.rigid)] {
