@@ -32,6 +32,8 @@ pub struct WedgeSpec {
     pub dx: f64,
     /// Sound speed / √(gL); `None`: the 2D+t scene's rule (10 × the expected largest speed from w_n).
     pub c0: Option<f64>,
+    /// Water depth / `penetration` (the scene's Z/D; the similarity solution is for infinite depth).
+    pub depth_over_draft: f64,
 }
 
 impl Default for WedgeSpec {
@@ -43,6 +45,7 @@ impl Default for WedgeSpec {
             penetration: 0.03,
             dx: 1.0e-3,
             c0: None,
+            depth_over_draft: 2.0,
         }
     }
 }
@@ -185,6 +188,7 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         coarse_ratio: 1.0,
         until: Until::X(x_end),
         c0: spec.c0,
+        depth_over_draft: spec.depth_over_draft,
         ..Default::default()
     };
     let mut scene = build(hull, &cfg)?;

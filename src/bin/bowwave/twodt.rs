@@ -88,6 +88,13 @@ pub struct WedgeArgs {
     /// (the 2D+t scene's rule, from w_n: fast but compressible at the root below 30°).
     #[arg(long, default_value = "root")]
     pub c0: String,
+    /// Penetrations Vt/L at which the runs are sampled, comma separated (at most 0.03, the wedge's draft).
+    #[arg(long, value_delimiter = ',', default_values_t = vec![0.01, 0.02, 0.03])]
+    pub at: Vec<f64>,
+    /// Water depth as a multiple of the wedge's draft 0.03 L (the similarity solution is for infinite depth:
+    /// at 2, the scene's default, the bottom lies 2 Vt below the apex at the last default sample).
+    #[arg(long, default_value_t = 2.0)]
+    pub depth: f64,
     /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -110,13 +117,20 @@ impl WedgeArgs {
                 let mut spec = twodt::wedge::WedgeSpec {
                     dx,
                     deadrise_deg: beta,
+                    depth_over_draft: self.depth,
                     ..Default::default()
                 };
                 if self.c0 == "root" {
                     spec.c0 = Some(spec.mach_safe_c0());
                 }
                 let clock = std::time::Instant::now();
-                let c = twodt::wedge::compare(&spec, &[0.01, 0.02, 0.03])?;
+                anyhow::ensure!(
+                    self.at.iter().all(|&a| a > 0.0 && a <= spec.penetration),
+                    "--at {:?}: expected penetrations in (0, {}]",
+                    self.at,
+                    spec.penetration
+                );
+                let c = twodt::wedge::compare(&spec, &self.at)?;
                 twodt::wedge::print(&c);
                 println!("  ({:.1} s for both runs)", clock.elapsed().as_secs_f64());
                 all.push(c);
