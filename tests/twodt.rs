@@ -492,3 +492,26 @@ fn batch_run_logs_plain_progress_and_halts_with_status_3() {
     assert!(!dir.join(bowwave::twodt::checkpoint::FILE).exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Water entry against the exact similarity solution (Zhao & Faltinsen 1993, no gravity): a 30° wedge in a
+/// tank 4 draughts deep, sampled at Vt = 0.015 L = 7.5 dx. The half-wedge force is within 10 % of the
+/// similarity solution's 7.085 ρV³t in both runs: at this spacing it is 6.8–7.4 % high, at dx/L 1e-3 (15 dx)
+/// 2.0–2.1 % (`studies/results/wedge-similarity/`), so 10 % is this spacing's error with a margin, not a
+/// tolerance that hides a trend. The peak pressure is reported, not asserted (it does not converge yet:
+/// +11 % here, +37 % at 15 dx, with the face over-pressured near the apex; see that log).
+#[test]
+fn wedge_entry_force_approaches_the_similarity_solution() {
+    let mut spec = WedgeSpec {
+        dx: 2e-3,
+        depth_over_draft: 4.0,
+        ..Default::default()
+    };
+    spec.c0 = Some(spec.mach_safe_c0());
+    let c = compare(&spec, &[0.015]).expect("wedge runs");
+    bowwave::twodt::wedge::print_similarity(&c);
+    let exact = c.similarity.and_then(|s| s.force_coefficient).expect("30° is on record");
+    for a in [c.twodt.last().unwrap(), c.rigid.last().unwrap()] {
+        let err = a.force_coefficient / exact - 1.0;
+        assert!(err.abs() < 0.10, "force {} against {exact}: {:+.1} %", a.force_coefficient, 100.0 * err);
+    }
+}
