@@ -509,9 +509,17 @@ fn wedge_entry_force_approaches_the_similarity_solution() {
     spec.c0 = Some(spec.mach_safe_c0());
     let c = compare(&spec, &[0.015]).expect("wedge runs");
     bowwave::twodt::wedge::print_similarity(&c);
-    let exact = c.similarity.and_then(|s| s.force_coefficient).expect("30° is on record");
+    let exact = c
+        .similarity
+        .and_then(|s| s.force_coefficient)
+        .expect("30° is on record");
     for a in [c.twodt.last().unwrap(), c.rigid.last().unwrap()] {
         let err = a.force_coefficient / exact - 1.0;
-        assert!(err.abs() < 0.10, "force {} against {exact}: {:+.1} %", a.force_coefficient, 100.0 * err);
+        assert!(
+            err.abs() < 0.10,
+            "force {} against {exact}: {:+.1} %",
+            a.force_coefficient,
+            100.0 * err
+        );
     }
 }
