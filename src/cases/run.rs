@@ -284,8 +284,9 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     let e_init = diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force);
     let mass = sim.fluid.total_mass();
     let has_gravity = matches!(case.body_force, super::case_file::BodyForceSpec::Gravity { .. });
+    let t_scale = (l / g).sqrt();
     let sampler = Sampler {
-        t_scale: (l / g).sqrt(),
+        t_scale,
         p_scale: case.fluid.rho0 * g * l,
         e0: e_init.mechanical(),
         e_scale: if has_gravity {
@@ -321,7 +322,6 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
         next: None,
         pvd: vec![],
     };
-    let t_scale = (l / g).sqrt();
     let label = format!("{} ", case.name);
     let mut progress = Progress::new(&label, opts.progress, None, |sim: &Simulation<2>| Status {
         fraction: sim.time / end,

@@ -27,7 +27,7 @@ pub struct Progress<F> {
     display: Display,
     start: Instant,
     /// Interval between two plain lines.
-    pub every: Duration,
+    every: Duration,
 }
 
 impl<F> Progress<F> {
@@ -63,17 +63,6 @@ impl<F> Progress<F> {
             eprintln!("{}: started", p.label_or_run());
         }
         p
-    }
-
-    /// Plain lines instead of a bar, every `every` (tests, and logs whatever stderr is).
-    pub fn lines(label: &str, every: Duration, status: F) -> Self {
-        Progress {
-            label: label.trim_end().to_string(),
-            status,
-            display: Display::Lines { last: Instant::now() },
-            start: Instant::now(),
-            every,
-        }
     }
 
     fn label_or_run(&self) -> &str {

@@ -320,8 +320,7 @@ fn case_hull(table: &mut toml::Table, k: &str, study_hull: &Path) -> Result<Case
             let field = format!("case.{k}.hull_variant");
             let generator = match t.remove("generator") {
                 Some(toml::Value::String(g)) => g,
-                None => return Err((format!("{field}.generator"), "`athena` or `alliance`".into())),
-                Some(_) => return Err((format!("{field}.generator"), "`athena` or `alliance`".into())),
+                _ => return Err((format!("{field}.generator"), "`athena` or `alliance`".into())),
             };
             let mut set = BTreeMap::new();
             for (key, v) in t {
