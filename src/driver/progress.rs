@@ -1,5 +1,5 @@
 //! Progress of a run: a bar on a terminal, plain lines in a log. A batch job's log is a file, where a bar
-//! draws nothing; there the run writes a line when it starts, every 60 s (: a
+//! draws nothing; there the run writes a line when it starts, every 60 s (a
 //! few hundred lines for a day's run) with where it stands, the steps, the time spent and the time left,
 //! and one when it ends.
 
