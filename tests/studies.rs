@@ -551,7 +551,7 @@ fn a_case_runs_its_own_hull_or_a_generated_variant() {
         &format!("variants-{}", std::process::id()),
         &format!(
             "froude = [0.64, 0.64, 0.64]\n[resolution]\ndx = [4e-3, 4e-3, 4e-3]\n[config]\nuntil = 0.01\n\
-             [case.2.hull_variant]\ngenerator = \"athena\"\nflare = 0\n[case.3]\nhull = \"{}\"\n",
+             [case.2.hull_variant]\ngenerator = \"athena\"\nflare_angle = 0\n[case.3]\nhull = \"{}\"\n",
             wigley.display()
         ),
     );
@@ -562,7 +562,7 @@ fn a_case_runs_its_own_hull_or_a_generated_variant() {
     assert_eq!(names, ["athena", "athena-variant", "wigley"]);
     let written = std::fs::read_to_string(runner::case_dir(&out, &study.cases[1]).join("hull.csv")).unwrap();
     assert!(
-        written.contains("VARIANT of the athena approximation (flare=0)"),
+        written.contains("VARIANT of the athena approximation (flare_angle=0)"),
         "{written}"
     );
     let manifest = std::fs::read_to_string(out.join("manifest.json")).unwrap();

@@ -7,6 +7,7 @@ pub mod hydrostatics;
 pub mod parametric;
 pub mod report;
 pub mod spline;
+pub mod station_facts;
 pub mod stl;
 pub mod surface;
 pub mod wigley;

@@ -49,7 +49,8 @@ pub enum HullAction {
         #[arg(long)]
         out: Option<PathBuf>,
         /// Override a generator parameter, `key=value` (repeatable; keys as in the file's `# generator:` line,
-        /// e.g. `flare=15` or `p_entrance=3`) for sensitivity studies. The hull is then labelled a variant.
+        /// e.g. `flare_angle=20`, `trim=1` or `x_entry=0.03`; their meaning and units are in docs/reference/hull-format.md)
+        /// for sensitivity studies. The hull is then labelled a variant.
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
     },
@@ -90,7 +91,7 @@ fn check_count(flag: &str, n: usize, least: usize) -> anyhow::Result<()> {
 
 /// Writes a hull file atomically after reading its text back through the file's own checks, so that nothing
 /// is written that `hull check` or a run would refuse (an import at a wrong `--length`, or a generator
-/// override such as `flare=1e9` that folds a section).
+/// override that folds a section).
 fn write_checked(out: &std::path::Path, h: &bowwave::geometry::hull_file::HullOffsets) -> anyhow::Result<()> {
     let text = h.to_csv();
     bowwave::geometry::hull_file::HullOffsets::parse(&text, &out.display().to_string())?;
@@ -149,6 +150,11 @@ impl HullAction {
                     spec.target_cb,
                     spec.n_mid
                 );
+                let facts = bowwave::geometry::station_facts::measure(&bowwave::geometry::surface::HullSurface::new(&h));
+                println!("measured: {facts}");
+                if let Some(a) = h.meta.notes.get("attitude") {
+                    println!("attitude: {a}");
+                }
             }
             HullAction::Show { file, out } => {
                 let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;
