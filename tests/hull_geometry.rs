@@ -229,7 +229,10 @@ fn approximated_athena_and_alliance_reproduce_their_particulars() {
 #[test]
 fn calibration_that_cannot_reach_its_target_is_an_error() {
     let spec = bowwave::geometry::parametric::athena();
-    let e = format!("{:#}", spec.with_overrides(&["flare_angle=1e9".to_string()]).unwrap_err());
+    let e = format!(
+        "{:#}",
+        spec.with_overrides(&["flare_angle=1e9".to_string()]).unwrap_err()
+    );
     assert!(e.contains("`flare_angle`") && e.contains("between"), "{e}");
     let mut far = spec.with_overrides(&["target_cb=0.95".to_string()]).unwrap();
     let e = format!("{:#}", far.calibrate(11, 9).unwrap_err());
@@ -251,10 +254,20 @@ fn athena_file_honours_the_thesis_station_facts() {
     assert!((f.entry - 0.024).abs() < 1e-3, "S_1: {f}");
     assert!((f.deepest_keel - 0.446).abs() < 0.016, "S_5: {f}");
     assert!((f.widest - 0.711).abs() < 0.016, "S_6: {f}");
-    assert!((f.end - 1.0).abs() < 1e-12 && f.end_half_breadth_wl > 0.0, "S_7 transom: {f}");
+    assert!(
+        (f.end - 1.0).abs() < 1e-12 && f.end_half_breadth_wl > 0.0,
+        "S_7 transom: {f}"
+    );
     assert!((f.draft * 47.0 - 1.63).abs() < 0.02 * 1.63, "T: {f}");
-    let honours = h.meta.notes.get("honours").expect("the header says which facts it honours");
-    assert!(honours.contains("S_1 x/L 0.024") && honours.contains("S_6 x/L 0.711"), "{honours}");
+    let honours = h
+        .meta
+        .notes
+        .get("honours")
+        .expect("the header says which facts it honours");
+    assert!(
+        honours.contains("S_1 x/L 0.024") && honours.contains("S_6 x/L 0.711"),
+        "{honours}"
+    );
 }
 
 /// The running attitude: bow-up trim lifts the stem, moves the entry and the deepest keel aft, and keeps the
@@ -263,11 +276,15 @@ fn athena_file_honours_the_thesis_station_facts() {
 fn a_trimmed_variant_keeps_its_displacement_and_lifts_its_bow() {
     use bowwave::geometry::station_facts::measure;
     let (_, _, rest) = bowwave::geometry::parametric::generate("athena", &[], 41, 31).unwrap();
-    let (_, _, trimmed) =
-        bowwave::geometry::parametric::generate("athena", &["trim=1".to_string()], 41, 31).unwrap();
+    let (_, _, trimmed) = bowwave::geometry::parametric::generate("athena", &["trim=1".to_string()], 41, 31).unwrap();
     let (hr, _) = hydrostatics(&HullSurface::new(&rest), 200, 800);
     let (ht, _) = hydrostatics(&HullSurface::new(&trimmed), 200, 800);
-    assert!((ht.volume - hr.volume).abs() < 1e-3 * hr.volume, "{} vs {}", ht.volume, hr.volume);
+    assert!(
+        (ht.volume - hr.volume).abs() < 1e-3 * hr.volume,
+        "{} vs {}",
+        ht.volume,
+        hr.volume
+    );
     let (fr, ft) = (measure(&HullSurface::new(&rest)), measure(&HullSurface::new(&trimmed)));
     assert!(ft.stem_keel_z > fr.stem_keel_z && ft.entry > fr.entry && ft.deepest_keel > fr.deepest_keel);
     assert!(trimmed.meta.notes["attitude"].contains("trim 1.000 deg"));

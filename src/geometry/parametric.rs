@@ -282,9 +282,7 @@ impl ParametricSpec {
             let u = i as f64 / (stations - 1) as f64;
             let x = (0.5 * (1.0 - (std::f64::consts::PI * u).cos())).mul_add(0.5, 0.5 * u);
             let deck = a.deck(x, f);
-            let zk = a
-                .keel(x, deck, |xh| self.keel_depth(xh))
-                .min(deck - 1e-3 * (f + t));
+            let zk = a.keel(x, deck, |xh| self.keel_depth(xh)).min(deck - 1e-3 * (f + t));
             let mut pts = vec![];
             for k in 0..points {
                 let s = k as f64 / (points - 1) as f64;
@@ -372,7 +370,9 @@ impl ParametricSpec {
     /// z = 0 the calm water). The header records the attitude and the sinkage that kept the displacement.
     pub fn offsets(&self, stations: usize, points: usize) -> anyhow::Result<HullOffsets> {
         self.check()?;
-        let rest = self.at_rest().with_stations(self.at_rest().offsets_with(stations, points, 0.0));
+        let rest = self
+            .at_rest()
+            .with_stations(self.at_rest().offsets_with(stations, points, 0.0));
         let volume = hydrostatics(&HullSurface::new(&rest), 200, 800).0.volume;
         let kept = self.displacement_sinkage(stations, points, volume)?;
         let mut h = self.with_stations(self.offsets_with(stations, points, kept));
@@ -434,7 +434,10 @@ impl Attitude {
     /// Hull-frame point of the earth-frame point (x', z').
     fn to_hull(&self, x: f64, z: f64) -> (f64, f64) {
         let (dx, dz) = (x - self.pivot, z + self.sinkage);
-        (self.pivot + self.cos * dx - self.sin * dz, self.sin * dx + self.cos * dz)
+        (
+            self.pivot + self.cos * dx - self.sin * dz,
+            self.sin * dx + self.cos * dz,
+        )
     }
 
     /// Earth-frame height of the deck (hull z = F) at earth x'.

@@ -56,11 +56,10 @@ fn refine_min(xs: &[f64], i: usize, f: &dyn Fn(f64) -> f64) -> f64 {
 }
 
 fn argmin(xs: &[f64], f: &dyn Fn(f64) -> f64) -> f64 {
-    let (i, _) = xs
-        .iter()
-        .map(|&x| f(x))
-        .enumerate()
-        .fold((0, f64::INFINITY), |best, (i, v)| if v < best.1 { (i, v) } else { best });
+    let (i, _) = xs.iter().map(|&x| f(x)).enumerate().fold(
+        (0, f64::INFINITY),
+        |best, (i, v)| if v < best.1 { (i, v) } else { best },
+    );
     refine_min(xs, i, f)
 }
 

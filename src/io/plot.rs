@@ -658,6 +658,116 @@ pub fn label_grid(
     Ok(())
 }
 
+/// One bar of a tornado chart: the quantity at the low and the high end of a parameter's range, each with
+/// its label (the parameter's value; a trailing `*` is the caller's mark of a value it distrusts).
+pub struct TornadoBar {
+    pub label: String,
+    pub low: (f64, String),
+    pub high: (f64, String),
+}
+
+/// A tornado chart (PNG, 1000 px wide): one horizontal bar per parameter from its low to its high value,
+/// widest at the top, a black line at the baseline and a dashed red line with its label at each mark (a
+/// published value). Bars are drawn from the baseline to each end, so a parameter whose both ends move the
+/// quantity the same way shows as one bar on one side.
+pub fn tornado(
+    path: &Path,
+    title: &str,
+    xlabel: &str,
+    baseline: f64,
+    bars: &[TornadoBar],
+    marks: &[(String, f64)],
+) -> anyhow::Result<()> {
+    register_font();
+    let mut bars: Vec<&TornadoBar> = bars.iter().collect();
+    let span = |b: &TornadoBar| (b.high.0 - baseline).abs().max((b.low.0 - baseline).abs());
+    bars.sort_by(|a, b| span(b).total_cmp(&span(a)));
+    let n = bars.len().max(1);
+    let (w, h) = (1000u32, 140 + 50 * n as u32);
+    let mut lo = baseline;
+    let mut hi = baseline;
+    for v in bars
+        .iter()
+        .flat_map(|b| [b.low.0, b.high.0])
+        .chain(marks.iter().map(|m| m.1))
+        .filter(|v| v.is_finite())
+    {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    let pad = 0.08 * (hi - lo).max(1e-9);
+    let mut buf = vec![0u8; (w * h * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 22))
+            .margin(15)
+            .x_label_area_size(45)
+            .y_label_area_size(190)
+            .build_cartesian_2d((lo - pad)..(hi + pad), 0f64..n as f64)?;
+        let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
+        chart
+            .configure_mesh()
+            .disable_y_mesh()
+            .x_desc(xlabel)
+            .y_labels(n)
+            .y_label_formatter(&|y| {
+                let k = (n as f64 - y - 0.5).round();
+                if (n as f64 - y - 0.5 - k).abs() < 0.1 && k >= 0.0 {
+                    labels.get(k as usize).cloned().unwrap_or_default()
+                } else {
+                    String::new()
+                }
+            })
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 17))
+            .draw()?;
+        let font = ("sans-serif", 14).into_font();
+        for (k, b) in bars.iter().enumerate() {
+            let y = n as f64 - k as f64 - 0.5;
+            for (end, colour) in [(&b.low, RGBColor(31, 119, 180)), (&b.high, RGBColor(255, 127, 14))] {
+                if !end.0.is_finite() {
+                    continue;
+                }
+                chart.draw_series(std::iter::once(Rectangle::new(
+                    [(baseline.min(end.0), y - 0.3), (baseline.max(end.0), y + 0.3)],
+                    colour.mix(0.7).filled(),
+                )))?;
+                chart.draw_series(std::iter::once(Text::new(
+                    end.1.clone(),
+                    (end.0, y + 0.05),
+                    font.clone(),
+                )))?;
+            }
+        }
+        chart.draw_series(std::iter::once(PathElement::new(
+            vec![(baseline, 0.0), (baseline, n as f64)],
+            BLACK.stroke_width(2),
+        )))?;
+        for (name, v) in marks {
+            let red = RGBColor(214, 39, 40);
+            let steps = 40;
+            for i in (0..steps).step_by(2) {
+                let (a, b) = (i as f64 / steps as f64, (i + 1) as f64 / steps as f64);
+                chart.draw_series(std::iter::once(PathElement::new(
+                    vec![(*v, a * n as f64), (*v, b * n as f64)],
+                    red.stroke_width(2),
+                )))?;
+            }
+            chart.draw_series(std::iter::once(Text::new(
+                name.clone(),
+                (*v, n as f64 - 0.1),
+                ("sans-serif", 15).into_font().color(&red),
+            )))?;
+        }
+        root.present()?;
+    }
+    let img = encode_png(&buf, w, h)?;
+    write_atomic(path, &img)?;
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

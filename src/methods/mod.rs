@@ -5,5 +5,6 @@
 pub mod bench;
 pub mod charts;
 pub mod convergence;
+pub mod sensitivity;
 pub mod twodt_chart;
 pub mod twodt_convergence;

@@ -77,12 +77,14 @@ fn cell(x: Option<f64>) -> String {
     x.map(|v| format!("{v:.6}")).unwrap_or_default()
 }
 
-/// Writes `jets.csv`, `comparison.csv` and `report.md` into `out`.
+/// Writes `jets.csv`, `comparison.csv` and `report.md` into `out`; `hull_facts` is the report's sentence on
+/// the station facts the hull honours and those measured on it.
 pub fn write_tables(
     out: &Path,
     study_name: &str,
     hull: &str,
     hull_status: &str,
+    hull_facts: &str,
     recs: &[CaseRecord],
     n_cases: usize,
 ) -> anyhow::Result<()> {
@@ -108,7 +110,7 @@ pub fn write_tables(
     write_atomic(&out.join("comparison.csv"), csv.as_bytes())?;
     write_atomic(
         &out.join("report.md"),
-        report(study_name, hull, hull_status, recs, &comps, n_cases).as_bytes(),
+        report(study_name, hull, hull_status, hull_facts, recs, &comps, n_cases).as_bytes(),
     )?;
     Ok(())
 }
@@ -118,6 +120,7 @@ pub fn report(
     study_name: &str,
     hull: &str,
     hull_status: &str,
+    hull_facts: &str,
     recs: &[CaseRecord],
     comps: &[Comparison],
     n_cases: usize,
@@ -130,6 +133,9 @@ pub fn report(
             "**The hull file is an {hull_status}**, not the hull of the published results: differences below \
              mix geometry and solver; read them as such.\n"
         );
+    }
+    if !hull_facts.is_empty() {
+        let _ = writeln!(s, "{hull_facts}\n");
     }
     let _ = writeln!(s, "{} of {} cases finished.\n", recs.len(), n_cases);
     let _ = writeln!(

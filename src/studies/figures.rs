@@ -3,6 +3,7 @@
 //! the reconstructed steady wave pattern η(x, y) of each case with Fr_x marked along the hull (Figs.
 //! 10.13–10.14, 10.18).
 
+use super::collect::RESOLVED_JET_PARTICLES;
 use super::runner::{case_dir, CaseRecord};
 use crate::analysis::contour;
 use crate::io::csv_table::Table;
@@ -119,26 +120,37 @@ pub fn write_all(out: &Path, hull: &str, recs: &[CaseRecord], study_out: &Path) 
         .filter(|p| p.hull == hull)
         .collect();
     for mp in metric_plots() {
-        let mut series: Vec<Series> = mp
-            .ours
-            .iter()
-            .map(|(name, f)| {
-                let points: Vec<(f64, f64)> = recs
-                    .iter()
-                    .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, f(m))))
-                    .collect();
-                let name = if points.is_empty() {
-                    format!("{name} (ours: no plunging case)")
-                } else {
-                    format!("{name} (ours)")
-                };
-                Series {
-                    name,
-                    points,
-                    style: Style::LineMarkers,
-                }
-            })
-            .collect();
+        let mut series: Vec<Series> = vec![];
+        for (name, f) in &mp.ours {
+            let points: Vec<(f64, f64)> = recs
+                .iter()
+                .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, f(m))))
+                .collect();
+            let name = if points.is_empty() {
+                format!("{name} (ours: no plunging case)")
+            } else {
+                format!("{name} (ours)")
+            };
+            // The report distrusts jets of fewer than RESOLVED_JET_PARTICLES: mark them on the plot too.
+            let thin: Vec<(f64, f64)> = recs
+                .iter()
+                .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, m)))
+                .filter(|(_, m)| m.jet_particles < RESOLVED_JET_PARTICLES)
+                .map(|(fr, m)| (fr, f(m)))
+                .collect();
+            series.push(Series {
+                name,
+                points,
+                style: Style::LineMarkers,
+            });
+            if !thin.is_empty() {
+                series.push(Series {
+                    name: format!("jet < {RESOLVED_JET_PARTICLES} particles: not trusted"),
+                    points: thin,
+                    style: Style::Markers,
+                });
+            }
+        }
         if let Some(f) = mp.published {
             if !published.is_empty() {
                 series.push(Series {

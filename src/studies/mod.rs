@@ -21,12 +21,18 @@ fn collect_locked(study: &study_file::Study, out: &Path) -> anyhow::Result<usize
     let recs = runner::collect_finished(study, out);
     let hull = crate::geometry::hull_file::HullOffsets::read(&study.hull_path)?;
     let status = format!("{:?}", hull.meta.status).to_lowercase();
+    let measured = crate::geometry::station_facts::measure(&crate::geometry::surface::HullSurface::new(&hull));
+    let facts = match hull.meta.notes.get("honours") {
+        Some(h) => format!("Its header says it honours: {h}. Measured on its surface: {measured}."),
+        None => format!("Measured on its surface: {measured}."),
+    };
     std::fs::create_dir_all(out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
     collect::write_tables(
         out,
         &study.spec.name,
         &hull.meta.name,
         &status,
+        &facts,
         &recs,
         study.cases.len(),
     )?;

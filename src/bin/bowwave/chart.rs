@@ -87,6 +87,20 @@ pub enum ChartKind {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Hull sensitivity: gathers a study whose cases are one-parameter hull variants
+    /// (`[case.N.hull_variant]`, e.g. studies/athena-sensitivity-fr0.5.toml) into sensitivity.csv, band.md
+    /// (each metric's one-at-a-time range, a superposed estimate, and whether the published value lies inside)
+    /// and a tornado chart per jet metric; runs nothing.
+    Sensitivity {
+        /// The study file.
+        study: PathBuf,
+        /// The study's output folder (default out/study-NAME, as `bowwave study` writes).
+        #[arg(long)]
+        from: Option<PathBuf>,
+        /// Output folder (default: the study's output folder).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
 }
 
 impl ChartKind {
@@ -119,6 +133,26 @@ impl ChartKind {
                     );
                 }
                 for f in charts::write_speed_accuracy(&out, &c.name, &label, &points)? {
+                    println!("wrote {}", f.display());
+                }
+            }
+            ChartKind::Sensitivity { study, from, out } => {
+                use bowwave::methods::sensitivity;
+                let st = bowwave::studies::study_file::Study::read(&study)?;
+                let from = from.unwrap_or_else(|| PathBuf::from("out").join(format!("study-{}", st.spec.name)));
+                let out = out.unwrap_or_else(|| from.clone());
+                let rows = sensitivity::rows(&st, &from)?;
+                let frs: Vec<f64> = st.cases.iter().map(|c| c.fr()).collect();
+                anyhow::ensure!(
+                    frs.windows(2).all(|w| w[0] == w[1]),
+                    "{}: a sensitivity study runs one Froude number; it has {frs:?}",
+                    study.display()
+                );
+                let hull = bowwave::geometry::hull_file::HullOffsets::read(&st.hull_path)?
+                    .meta
+                    .name;
+                print!("{}", sensitivity::table(&rows));
+                for f in sensitivity::write(&out, &hull, frs[0], &rows)? {
                     println!("wrote {}", f.display());
                 }
             }

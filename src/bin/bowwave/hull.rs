@@ -150,7 +150,8 @@ impl HullAction {
                     spec.target_cb,
                     spec.n_mid
                 );
-                let facts = bowwave::geometry::station_facts::measure(&bowwave::geometry::surface::HullSurface::new(&h));
+                let facts =
+                    bowwave::geometry::station_facts::measure(&bowwave::geometry::surface::HullSurface::new(&h));
                 println!("measured: {facts}");
                 if let Some(a) = h.meta.notes.get("attitude") {
                     println!("attitude: {a}");

@@ -1,0 +1,359 @@
+//! Hull sensitivity (`bowwave chart sensitivity`): a study whose cases are one-parameter variants of a
+//! generated hull (`[case.N.hull_variant]`, issue #30) gathered into one row per case and one tornado chart
+//! per jet metric: for each parameter, the range of the metric over its values (the approximation's own value
+//! included), against the approximation and the published value. The band is the one-at-a-time range, and a
+//! linear superposition of the parameters' extreme effects labelled as an estimate, not a run.
+
+use crate::io::atomic::write_atomic;
+use crate::io::plot::{tornado, TornadoBar};
+use crate::reference::published_jet;
+use crate::studies::collect::RESOLVED_JET_PARTICLES as TRUSTED_JET_PARTICLES;
+use crate::studies::runner::{collect_finished, CaseRecord};
+use crate::studies::study_file::{CaseHull, Study};
+use crate::twodt::result::PlungeMetrics;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// One finished case: which parameter it changed (none for the approximation itself) and what it measured.
+#[derive(Clone, Debug)]
+pub struct Row {
+    pub case: usize,
+    /// The changed parameter, `""` for the study's own hull.
+    pub parameter: String,
+    /// Its value in the case and in the approximation.
+    pub value: f64,
+    pub baseline_value: f64,
+    pub plunge: Option<PlungeMetrics>,
+    pub particles: usize,
+    pub steps: u64,
+    pub wall_seconds: f64,
+    pub cpu_seconds: f64,
+}
+
+/// A metric of a plunge, with its name in the table and its label on a chart.
+pub struct Metric {
+    pub key: &'static str,
+    pub label: &'static str,
+    pub get: fn(&PlungeMetrics) -> f64,
+    /// The published value of the same hull and Froude number, if Table 10.1/10.2 gives it.
+    pub published: Option<fn(&crate::reference::PublishedJet) -> f64>,
+}
+
+/// The charted metrics: plunge position, jet height and circulation.
+pub fn metrics() -> Vec<Metric> {
+    vec![
+        Metric {
+            key: "x_plunge_over_l",
+            label: "x_plunge / L",
+            get: |p| p.x_plunge_over_l,
+            published: Some(|j| j.x_plunge_over_l),
+        },
+        Metric {
+            key: "y_plunge_over_l",
+            label: "y_plunge / L",
+            get: |p| p.y_plunge_over_l,
+            published: Some(|j| j.y_plunge_over_l),
+        },
+        Metric {
+            key: "h_pj_over_d",
+            label: "H_pj / D",
+            get: |p| p.h_pj_over_d,
+            published: Some(|j| j.h_pj_over_d),
+        },
+        Metric {
+            key: "gamma_over_ud",
+            label: "Γ / (U D)",
+            get: |p| p.gamma_over_ud,
+            published: None,
+        },
+    ]
+}
+
+/// The rows of a study's finished cases. A case must be the study's own hull or a variant of one generator
+/// changing one parameter (a case changing several is refused: a tornado bar is one parameter).
+pub fn rows(study: &Study, out: &Path) -> anyhow::Result<Vec<Row>> {
+    let recs = collect_finished(study, out);
+    anyhow::ensure!(
+        !recs.is_empty(),
+        "{}: no finished case of {} (run `bowwave study` first)",
+        out.display(),
+        study.file.display()
+    );
+    recs.iter().map(row).collect()
+}
+
+fn row(r: &CaseRecord) -> anyhow::Result<Row> {
+    let (parameter, value, baseline_value) = match &r.spec.hull {
+        CaseHull::File(_) => (String::new(), f64::NAN, f64::NAN),
+        CaseHull::Variant { generator, set } => {
+            anyhow::ensure!(
+                set.len() == 1,
+                "case {}: a sensitivity case changes one generator parameter; it changes {}",
+                r.spec.index,
+                set.len()
+            );
+            let (k, v) = set.iter().next().expect("one entry");
+            let base = serde_json::to_value(crate::geometry::parametric::named(generator)?)?;
+            let b = base.get(k).and_then(|x| x.as_f64()).unwrap_or(f64::NAN);
+            (k.clone(), *v, b)
+        }
+    };
+    Ok(Row {
+        case: r.spec.index,
+        parameter,
+        value,
+        baseline_value,
+        plunge: r.result.plunge.clone(),
+        particles: r.result.particles,
+        steps: r.result.steps,
+        wall_seconds: r.result.wall_seconds,
+        cpu_seconds: r.result.cpu_seconds,
+    })
+}
+
+/// The table (`sensitivity.csv`): one row per case.
+pub fn table(rows: &[Row]) -> String {
+    let mut s = String::from(
+        "case,parameter,value,baseline_value,plunged,x_plunge_over_l,y_plunge_over_l,h_pj_over_d,gamma_over_ud,\
+         jet_particles,particles,steps,wall_seconds,cpu_seconds\n",
+    );
+    for r in rows {
+        let p = r.plunge.as_ref();
+        let f = |g: fn(&PlungeMetrics) -> f64| p.map(|p| format!("{}", g(p))).unwrap_or_default();
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{},{},{},{},{},{},{:.1},{:.1}",
+            r.case,
+            if r.parameter.is_empty() {
+                "approximation"
+            } else {
+                &r.parameter
+            },
+            if r.value.is_finite() {
+                r.value.to_string()
+            } else {
+                String::new()
+            },
+            if r.baseline_value.is_finite() {
+                r.baseline_value.to_string()
+            } else {
+                String::new()
+            },
+            p.is_some(),
+            f(|p| p.x_plunge_over_l),
+            f(|p| p.y_plunge_over_l),
+            f(|p| p.h_pj_over_d),
+            f(|p| p.gamma_over_ud),
+            p.map(|p| p.jet_particles.to_string()).unwrap_or_default(),
+            r.particles,
+            r.steps,
+            r.wall_seconds,
+            r.cpu_seconds
+        );
+    }
+    s
+}
+
+/// The measured range of one metric: the approximation's value, each parameter's bar, the one-at-a-time
+/// band and the superposed estimate.
+pub struct Band {
+    pub baseline: f64,
+    pub bars: Vec<TornadoBar>,
+    /// Smallest and largest value over all cases.
+    pub one_at_a_time: (f64, f64),
+    /// Baseline plus the sum of every parameter's most negative (most positive) change: an estimate of what
+    /// the combinations could span if the effects added up, not a run.
+    pub superposed: (f64, f64),
+    /// Cases that did not plunge (their parameter and value).
+    pub no_plunge: Vec<String>,
+}
+
+/// The band of `metric` over the rows; `None` when the approximation itself did not plunge or is missing.
+pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
+    let base_row = rows.iter().find(|r| r.parameter.is_empty())?;
+    let base = base_row.plunge.as_ref().map(metric.get)?;
+    let mark = |p: &PlungeMetrics| {
+        if p.jet_particles < TRUSTED_JET_PARTICLES {
+            "*"
+        } else {
+            ""
+        }
+    };
+    let base_mark = base_row.plunge.as_ref().map(mark).unwrap_or("");
+    let mut params: Vec<&str> = rows
+        .iter()
+        .filter(|r| !r.parameter.is_empty())
+        .map(|r| r.parameter.as_str())
+        .collect();
+    params.sort();
+    params.dedup();
+    let mut bars = vec![];
+    let (mut lo, mut hi) = (base, base);
+    let (mut sum_neg, mut sum_pos) = (0.0, 0.0);
+    let mut no_plunge = vec![];
+    for k in params {
+        let of_k: Vec<&Row> = rows.iter().filter(|r| r.parameter == k).collect();
+        let mut pts: Vec<(f64, f64, &str)> = vec![(of_k[0].baseline_value, base, base_mark)];
+        for r in of_k {
+            match &r.plunge {
+                Some(p) => pts.push((r.value, (metric.get)(p), mark(p))),
+                None => no_plunge.push(format!("{k} = {}", r.value)),
+            }
+        }
+        let (Some(min), Some(max)) = (
+            pts.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1)),
+            pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1)),
+        ) else {
+            continue;
+        };
+        lo = lo.min(min.1);
+        hi = hi.max(max.1);
+        sum_neg += (min.1 - base).min(0.0);
+        sum_pos += (max.1 - base).max(0.0);
+        let label = |p: (f64, f64, &str)| format!("{} {}{}", short(p.0), format_value(p.1), p.2);
+        bars.push(TornadoBar {
+            label: k.to_string(),
+            low: (min.1, label(min)),
+            high: (max.1, label(max)),
+        });
+    }
+    Some(Band {
+        baseline: base,
+        bars,
+        one_at_a_time: (lo, hi),
+        superposed: (base + sum_neg, base + sum_pos),
+        no_plunge,
+    })
+}
+
+fn short(v: f64) -> String {
+    let s = format!("{v:.3}");
+    format!("{}:", s.trim_end_matches('0').trim_end_matches('.'))
+}
+
+fn format_value(v: f64) -> String {
+    format!("{v:.3}")
+}
+
+/// Writes `sensitivity.csv`, `band.md` and a tornado PNG per metric into `dir`; returns the files written.
+pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row]) -> anyhow::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir)?;
+    let mut files = vec![];
+    let csv = dir.join("sensitivity.csv");
+    write_atomic(&csv, table(rows).as_bytes())?;
+    files.push(csv);
+    let published = published_jet(hull, fr);
+    let mut md = format!(
+        "# {hull} at Fr {fr}: what the unknown geometry moves\n\n{} finished cases (`sensitivity.csv`). Bars: \
+         the range of each metric over one parameter's values, the approximation's own included; `*` marks a \
+         jet of fewer than {TRUSTED_JET_PARTICLES} particles. The superposed band adds every parameter's \
+         largest change of each sign: an estimate of what combinations could span if the effects added up, \
+         not a run.\n\n| metric | approximation | one at a time | superposed (estimate) | published | inside one-at-a-time? |\n|---|---|---|---|---|---|\n",
+        rows.len()
+    );
+    for m in metrics() {
+        let Some(b) = band(rows, &m) else { continue };
+        let pubv = published.as_ref().zip(m.published).map(|(j, f)| f(j));
+        let inside = pubv.map(|v| {
+            if (b.one_at_a_time.0..=b.one_at_a_time.1).contains(&v) {
+                "yes"
+            } else if (b.superposed.0..=b.superposed.1).contains(&v) {
+                "no (inside the superposed estimate)"
+            } else {
+                "no"
+            }
+        });
+        let _ = writeln!(
+            md,
+            "| {} | {:.4} | {:.4} – {:.4} | {:.4} – {:.4} | {} | {} |",
+            m.label,
+            b.baseline,
+            b.one_at_a_time.0,
+            b.one_at_a_time.1,
+            b.superposed.0,
+            b.superposed.1,
+            pubv.map(|v| format!("{v:.4}")).unwrap_or_else(|| "–".into()),
+            inside.unwrap_or("–")
+        );
+        if !b.no_plunge.is_empty() {
+            let _ = writeln!(md, "\nNo plunge (left out of the bars): {}.\n", b.no_plunge.join(", "));
+        }
+        let marks: Vec<(String, f64)> = pubv.map(|v| vec![(format!("published {v:.3}"), v)]).unwrap_or_default();
+        let png = dir.join(format!("tornado_{}.png", m.key));
+        tornado(
+            &png,
+            &format!(
+                "{hull} Fr {fr}: {} by hull parameter (* jet < {TRUSTED_JET_PARTICLES} particles)",
+                m.label
+            ),
+            m.label,
+            b.baseline,
+            &b.bars,
+            &marks,
+        )?;
+        files.push(png);
+    }
+    let p = dir.join("band.md");
+    write_atomic(&p, md.as_bytes())?;
+    files.push(p);
+    Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(case: usize, parameter: &str, value: f64, baseline_value: f64, x: Option<f64>) -> Row {
+        Row {
+            case,
+            parameter: parameter.into(),
+            value,
+            baseline_value,
+            plunge: x.map(|x| PlungeMetrics {
+                x_plunge_over_l: x,
+                jet_particles: 150,
+                ..Default::default()
+            }),
+            particles: 1,
+            steps: 1,
+            wall_seconds: 1.0,
+            cpu_seconds: 1.0,
+        }
+    }
+
+    /// Each bar spans its parameter's values with the approximation's own value included; the one-at-a-time
+    /// band is the extreme cases; the superposed estimate adds each parameter's largest change of each sign;
+    /// a case without a plunge is named, not charted.
+    #[test]
+    fn bars_and_bands_of_one_parameter_variants() {
+        let rows = vec![
+            row(1, "", f64::NAN, f64::NAN, Some(0.30)),
+            row(2, "flare_angle", 0.0, 10.0, Some(0.35)),
+            row(3, "flare_angle", 40.0, 10.0, Some(0.25)),
+            row(4, "trim", 1.0, 0.0, Some(0.32)),
+            row(5, "trim", 1.5, 0.0, None),
+        ];
+        let m = &metrics()[0];
+        let b = band(&rows, m).unwrap();
+        assert_eq!(b.baseline, 0.30);
+        let flare = b.bars.iter().find(|b| b.label == "flare_angle").unwrap();
+        assert_eq!((flare.low.0, flare.high.0), (0.25, 0.35));
+        assert!(
+            flare.low.1.starts_with("40:") && flare.high.1.starts_with("0:"),
+            "{} {}",
+            flare.low.1,
+            flare.high.1
+        );
+        let trim = b.bars.iter().find(|b| b.label == "trim").unwrap();
+        assert_eq!((trim.low.0, trim.high.0), (0.30, 0.32));
+        assert_eq!(b.one_at_a_time, (0.25, 0.35));
+        assert!((b.superposed.0 - 0.25).abs() < 1e-12 && (b.superposed.1 - 0.37).abs() < 1e-12);
+        assert_eq!(b.no_plunge, vec!["trim = 1.5".to_string()]);
+        let csv = table(&rows);
+        assert!(
+            csv.lines().nth(1).unwrap().starts_with("1,approximation,,,true,0.3,"),
+            "{csv}"
+        );
+        assert!(csv.lines().nth(5).unwrap().starts_with("5,trim,1.5,0,false,,"), "{csv}");
+    }
+}
