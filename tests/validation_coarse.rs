@@ -75,19 +75,20 @@ fn oscillating_drop_follows_the_ode_for_two_periods() {
     assert!(c[1].value < 0.0, "mechanical energy grew: {}", c[1].value);
 }
 
-/// The Martin–Moyce column's residual height at the back wall follows their Table 6 within one marker
-/// spacing (1/18 of the column height). Measured: max 0.019 (a/dx 25), 0.020 (50). The front of the same
-/// run misses the issue's 10 % (see docs/reference/method.md), so only its error is required to be computed here.
+/// The Martin–Moyce column: its residual height at the back wall follows their Table 6 within one marker
+/// spacing (1/18 of the column height), and its surge front's speed dZ/dT over Table 2's T in [1.1, 2.5]
+/// is within 10 % of theirs (the owner's check, issue #35; the position error, a constant lead from the
+/// instantaneous release, is reported beside it). Measured at a/dx 25: height max 0.019; speed 1.200
+/// against 1.175 (2.1 %).
 #[test]
-fn martin_moyce_column_height_follows_table_6() {
+fn martin_moyce_column_height_and_front_speed_follow_the_experiment() {
     let r = run_case("dam-break-mm", 25.0, None);
     let checks = validation::martin_moyce(&r);
-    let (height, front): (Vec<Check>, Vec<Check>) = checks
-        .into_iter()
-        .partition(|c| c.quantity.starts_with("column height"));
-    assert_eq!(height.len(), 2);
-    assert_checks(&height);
-    assert!(front.iter().all(|c| c.error.is_finite()), "front errors not computed");
+    let checked: Vec<Check> = checks.iter().filter(|c| c.tolerance.is_some()).cloned().collect();
+    assert_eq!(checked.len(), 2, "the height and the speed, nothing else checked");
+    assert!(checked.iter().any(|c| c.quantity.starts_with("front speed")));
+    assert_checks(&checked);
+    assert!(checks.iter().all(|c| c.error.is_finite()), "front errors not computed");
 }
 
 /// The whole jet on a flat wall (`jet-plate`, no floor): the wall force within 2 % of ρU²h and every sensor's

@@ -34,10 +34,12 @@ fn errors_at_reference_times(
     (worst, sum / n.max(1) as f64)
 }
 
-/// Window of T = √2 t √(g/a) over which the front's speed is compared (reported only): Table 2's times from
-/// 1.19 to 2.32. Chosen after seeing where our lead is gained: at T = 0.41 our front and theirs agree within
-/// 0.01 a, at 0.84 ours is 0.16 a ahead and from 1.19 on 0.24–0.34 a, so a speed read after T ≈ 1.2 is what
-/// the release no longer sets (studies/results/validation/LOG.md, "Two checks for the owner to decide").
+/// Window of T = √2 t √(g/a) over which the front's speed is checked: Table 2's times from 1.19 to 2.32. The
+/// owner's decision (issue #35): the check is the speed there, within 10 %; the position error is reported
+/// beside it. At T = 0.41 our front and theirs agree within 0.01 a, at 0.84 ours is 0.16 a ahead and from 1.19
+/// on 0.24–0.34 a: a lead gained in the first instants and then kept, what a gate that takes time to lift
+/// leaves against a release the model makes instantaneous, so the speed after T ≈ 1.2 is what the release no
+/// longer sets (studies/results/validation/LOG.md).
 const MM_SPEED_WINDOW: (f64, f64) = (1.1, 2.5);
 
 /// Least-squares slope of y against x.
@@ -73,8 +75,9 @@ pub(super) fn mm_column_height(r: &RunResult) -> Vec<f64> {
     col(r, "eta_column").iter().map(|e| e / two_a).collect()
 }
 
-/// Martin–Moyce (n² = 2): the surge front |x − x_exp|/x_exp ≤ 10 % at every T ≤ 2.5, T = √2 t √(g/a)
-/// (the issue's tolerance); the residual column height h/(2a) against their Table 6 within 1/18, the spacing
+/// Martin–Moyce (n² = 2): the surge front's speed dZ/dT over [`MM_SPEED_WINDOW`] within 10 % of theirs, with
+/// the position error |x − x_exp|/x_exp at every T ≤ 2.5, T = √2 t √(g/a), reported beside it; the residual
+/// column height h/(2a) against their Table 6 within 1/18, the spacing
 /// of the markers it was read from (their values are multiples of 1/18 ≈ 0.056); and, reported only, the
 /// front against the other experiment with this column, Koshizuka & Oka (1996), at the same times.
 pub fn martin_moyce(r: &RunResult) -> Vec<Check> {
@@ -101,11 +104,11 @@ pub fn martin_moyce(r: &RunResult) -> Vec<Check> {
     vec![
         check(
             r,
-            "front x/a, max rel. error at experimental T <= 2.5",
+            "front x/a, max rel. error at experimental T <= 2.5 (a constant lead from the release, see the speed)",
             front.1,
             front.2,
             front.0,
-            Some(0.10),
+            None,
         ),
         check(
             r,
@@ -124,7 +127,7 @@ pub fn martin_moyce(r: &RunResult) -> Vec<Check> {
             speed,
             speed_ref,
             (speed / speed_ref - 1.0).abs(),
-            None,
+            Some(0.10),
         ),
         check(
             r,
