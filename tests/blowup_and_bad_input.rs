@@ -185,3 +185,32 @@ fn unknown_case_name_lists_the_built_ins() {
     let e = cases::load("no-such-case").unwrap_err().to_string();
     assert!(e.contains("dam-break") && e.contains("hydrostatic"), "{e}");
 }
+
+/// Regression (issue #36): a user's case that kept `name = "dam-break"` from the printed built-in but had its
+/// own sensors ran to the end, then panicked with "series column `pstar_P1` missing" (exit 101): checks and
+/// plots were chosen by the name. Now a built-in's checks apply only to a case that declares the built-in's
+/// experiment; this one runs, writes its outputs and says it has no checks.
+#[test]
+fn a_case_named_like_a_built_in_with_other_probes_runs_without_its_checks() {
+    let text = cases::builtin::builtin_text("dam-break")
+        .unwrap()
+        .replace("name = \"P1\"", "name = \"S1\"")
+        .replace("name = \"P2\"", "name = \"S2\"");
+    let case = CaseFile::parse(&text, "mine.toml").unwrap();
+    assert_eq!(case.name, "dam-break");
+    assert_eq!(bowwave::validation::builtin_experiment(&case), None);
+    assert_eq!(
+        bowwave::validation::builtin_experiment(&cases::load("dam-break").unwrap()),
+        Some("dam-break")
+    );
+    let out = std::env::temp_dir().join(format!("bowwave-named-like-builtin-{}", std::process::id()));
+    let opts = RunOptions {
+        res: Some(8.0),
+        end_time: Some(0.05),
+        ..Default::default()
+    };
+    let status = bowwave::validation::run_and_report(&case, &out, opts).expect("runs");
+    assert_eq!(status, 0);
+    assert!(out.join("dam-break_energy.png").exists());
+    let _ = std::fs::remove_dir_all(&out);
+}

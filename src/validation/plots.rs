@@ -26,7 +26,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
         }],
     )?;
     files.push(p);
-    match r.case.name.as_str() {
+    match super::builtin_experiment(&r.case).unwrap_or("") {
         "dam-break" => {
             let res = r.case.scales.length / r.dx;
             for (probe, mref, bref) in [("P1", "marrone_p1", "buchner_p1"), ("P2", "marrone_p2", "buchner_p2")] {

@@ -54,6 +54,30 @@ pub enum HullAction {
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
     },
+    /// Write the sections a 2D+t run sees, for another code to run the same deforming section (e.g.
+    /// tools/pysph-2dt): at x/L = FROM, FROM + STEP, … ≤ TO, the section at POINTS values of the girth ξ
+    /// (uniform, keel 0 to deck 1) with its x-derivatives at fixed ξ (units of L; the wall velocity is
+    /// U (y_x, z_x), its acceleration U² (y_xx, z_xx)/L). CSV columns x_over_l, k, xi, y_over_l, z_over_l,
+    /// y_x, z_x, y_xx, z_xx.
+    Sections {
+        /// Hull offsets file.
+        file: PathBuf,
+        /// First x/L.
+        #[arg(long, default_value_t = 0.0)]
+        from: f64,
+        /// Last x/L.
+        #[arg(long, default_value_t = 0.6)]
+        to: f64,
+        /// Step in x/L.
+        #[arg(long, default_value_t = 1e-3)]
+        step: f64,
+        /// Girth points per section (2 to 2000).
+        #[arg(long, default_value_t = 401)]
+        points: usize,
+        /// Output CSV file.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Draw a hull: body plan, profile, waterline plan and w_n along the girth (PNG).
     Show {
         /// Hull offsets file.
@@ -156,6 +180,42 @@ impl HullAction {
                 if let Some(a) = h.meta.notes.get("attitude") {
                     println!("attitude: {a}");
                 }
+            }
+            HullAction::Sections {
+                file,
+                from,
+                to,
+                step,
+                points,
+                out,
+            } => {
+                check_count("--points", points, 2)?;
+                anyhow::ensure!(
+                    step > 0.0 && step.is_finite() && from.is_finite() && to.is_finite() && to >= from,
+                    "--from, --to, --step: expected from ≤ to and a positive step, got {from}, {to}, {step}"
+                );
+                let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;
+                let s = bowwave::geometry::surface::HullSurface::new(&h);
+                let cols = [
+                    "x_over_l", "k", "xi", "y_over_l", "z_over_l", "y_x", "z_x", "y_xx", "z_xx",
+                ];
+                let mut t = bowwave::io::csv_table::Table::new(cols.iter().map(|c| c.to_string()).collect());
+                let n = ((to - from) / step + 1e-9).floor() as usize;
+                for i in 0..=n {
+                    let x = from + i as f64 * step;
+                    let Some(c) = s.curve(x) else { continue };
+                    for k in 0..points {
+                        let xi = k as f64 / (points - 1) as f64;
+                        let p = c.point(xi);
+                        t.push(vec![x, k as f64, xi, p.y, p.z, p.y_x, p.z_x, p.y_xx, p.z_xx]);
+                    }
+                }
+                t.write(&out)?;
+                println!(
+                    "wrote {} ({} sections of {points} points)",
+                    out.display(),
+                    t.rows.len() / points
+                );
             }
             HullAction::Show { file, out } => {
                 let h = bowwave::geometry::hull_file::HullOffsets::read(&file)?;

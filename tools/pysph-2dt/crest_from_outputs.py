@@ -1,0 +1,82 @@
+"""The crest history and the first overturning of a PySPH 2D+t run (twodt.py) beside bowwave's (eta.csv).
+
+    python crest_from_outputs.py PYSPH_OUT BOWWAVE_RUN_DIR [--hull hulls/athena.csv]
+
+BOWWAVE_RUN_DIR: a `bowwave twodt` output folder or a study's case folder (eta.csv, series.csv, metrics.json).
+
+Crest: the highest fluid particle, z/D, at each output x/L (bowwave: the largest eta/D of eta.csv at that x,
+its free-surface height profile). Overturning (PySPH only; bowwave's plunge criteria are in its metrics.json):
+the first output where, seaward of the crest, a column of width 2 dx holds at least 5 fluid particles above
+an empty gap of at least 3 dx over other fluid (a jet over air). Prints both histories and the differences at common x.
+"""
+import glob
+import json
+import os
+import sys
+import numpy as np
+
+
+def header(path):
+    meta = {}
+    for line in open(path):
+        if not line.startswith('#'):
+            break
+        k, _, v = line[1:].partition(':')
+        meta[k.strip()] = v.strip()
+    return meta
+
+
+def overturned(y, z, dx):
+    """Seaward of the crest, a column of width 2 dx holding at least 5 fluid particles above a vertical gap of
+    3 dx over fluid: a jet over air, not a stray drop or the sheet on the hull."""
+    if len(z) == 0:
+        return False
+    y_crest = y[np.argmax(z)]
+    sea = y > y_crest
+    y, z = y[sea], z[sea]
+    cols = np.floor(y / (2 * dx)).astype(int)
+    for c in np.unique(cols):
+        zz = np.sort(z[cols == c])
+        if len(zz) < 7:
+            continue
+        gaps = np.diff(zz)
+        k = int(np.argmax(gaps))
+        if gaps[k] > 3 * dx and len(zz) - (k + 1) >= 5:
+            return True
+    return False
+
+
+def main():
+    out, case_dir = sys.argv[1], sys.argv[2]
+    hull = sys.argv[4] if len(sys.argv) > 4 and sys.argv[3] == '--hull' else 'hulls/athena.csv'
+    meta = header(hull)
+    d = float(meta['draft_m']) / float(meta['length_m'])
+    fr = json.load(open(os.path.join(case_dir, 'metrics.json')))['fr']
+    x0 = float(np.loadtxt(os.path.join(case_dir, 'series.csv'), delimiter=',', skiprows=1, max_rows=1)[0])
+    files = sorted(glob.glob(os.path.join(out, '*.npz')), key=lambda f: int(f.rsplit('_', 1)[1].split('.')[0]))
+    ours = []
+    first_overturn = None
+    for f in files:
+        data = np.load(f, allow_pickle=True)
+        t = float(data['solver_data'][()]['t'])
+        fl = data['particles'][()]['fluid']['arrays']
+        y, z = fl['x'], fl['y']
+        dx = np.sqrt(fl['m'][0])
+        x = x0 + fr * t
+        ours.append((x, z.max() / d))
+        if first_overturn is None and overturned(y[z > 0], z[z > 0], dx):
+            first_overturn = x
+    eta = np.loadtxt(os.path.join(case_dir, 'eta.csv'), delimiter=',', skiprows=1)
+    xs = np.unique(eta[:, 0])
+    theirs = [(x, eta[eta[:, 0] == x, 2].max()) for x in xs]
+    print('x/L      PySPH crest z/D   bowwave crest eta/D')
+    for x, c in ours:
+        b = np.interp(x, [p[0] for p in theirs], [p[1] for p in theirs], left=np.nan, right=np.nan)
+        print(f'{x:.4f}   {c:.4f}            {b:.4f}')
+    print(f'PySPH: first overturning (jet over a gap of 3 dx) at x/L = {first_overturn}')
+    p = json.load(open(os.path.join(case_dir, 'metrics.json'))).get('plunge') or {}
+    print(f"bowwave: plunge at x/L = {p.get('x_plunge_over_l')}")
+
+
+if __name__ == '__main__':
+    main()

@@ -1,0 +1,201 @@
+"""bowwave's 2D+t bow-wave run in PySPH, an independent code on the same deforming section (issue #30, item 3).
+
+The section sequence comes from bowwave itself, so both codes see the same hull surface:
+
+    bowwave hull sections hulls/athena.csv --to 0.5 --out sections.csv
+
+and the scene from a finished bowwave 2D+t case (its case.json: Fr, dx, c0, tank width and depth in B and D; the
+hull file's header: B, D):
+
+    python twodt.py --sections sections.csv --case CASE/case.json --hull hulls/athena.csv -d OUT
+
+Non-dimensional with L, g and rho0 (L = g = rho0 = 1); U = Fr; the section at time t is the hull's at
+x = x0 + U t. Half domain: a free-slip symmetry wall y = 0, a bottom at z = -Z (Z = depth * D), a wall at
+y = W (W = width * B), open top; fluid at rest below z = 0 outside the section at x0, hydrostatic pressure.
+Uniform spacing dx everywhere (bowwave grades its rows below 0.2 D at constant h: PySPH cannot, so it has more
+particles, not a different resolution where the jet forms).
+
+Scheme: PySPH 1.0b2's EDAC (entropically damped artificial compressibility) with Adami et al.'s (2012) wall
+condition: the wall pressure extrapolated from the fluid with the wall's acceleration, which needs no wall
+history, so the hull's wall particles can be placed anew at every step. Wendland quintic kernel, h = 1.33 dx
+(bowwave: Gaussian), artificial viscosity alpha = 0.02 (bowwave's delta-SPH: alpha 0.02, density diffusion
+0.1), inviscid (free slip), no XSPH, c0 from bowwave's case.
+
+The hull: after every step its wall particles are placed on the section at the new time: points at arc-length
+spacing dx along the section from the keel (the first dx/2 from it), LAYERS layers inside it along the normal,
+each with the section's velocity U (y_x, z_x) and acceleration U^2 (y_xx, z_xx) at its girth position; unused
+slots of the array wait below the tank, out of every neighbourhood.
+
+Outputs every --every x/L; read them with crest_from_outputs.py.
+"""
+import json
+import numpy as np
+from pysph.base.kernels import WendlandQuintic
+from pysph.base.utils import get_particle_array
+from pysph.solver.application import Application
+from pysph.sph.wc.edac import EDACScheme
+from pysph.sph.basic_equations import XSPHCorrection
+
+LAYERS = 4
+HDX = 1.33
+
+
+def header(path):
+    """The hull file's `# key: value` header."""
+    meta = {}
+    with open(path) as f:
+        for line in f:
+            if not line.startswith('#'):
+                break
+            k, _, v = line[1:].partition(':')
+            meta[k.strip()] = v.strip()
+    return meta
+
+
+class Sections:
+    """The section sequence written by `bowwave hull sections`: linear in x between its samples."""
+
+    def __init__(self, path):
+        a = np.loadtxt(path, delimiter=',', skiprows=1)
+        self.xs = np.unique(a[:, 0])
+        n = len(self.xs)
+        self.npts = len(a) // n
+        self.data = a.reshape(n, self.npts, a.shape[1])[:, :, 3:]  # y, z, y_x, z_x, y_xx, z_xx
+
+    def at(self, x):
+        if x <= self.xs[0]:
+            return self.data[0]
+        if x >= self.xs[-1]:
+            return self.data[-1]
+        i = np.searchsorted(self.xs, x) - 1
+        f = (x - self.xs[i]) / (self.xs[i + 1] - self.xs[i])
+        return (1 - f) * self.data[i] + f * self.data[i + 1]
+
+
+class TwoDt(Application):
+    def add_user_options(self, group):
+        group.add_argument('--sections', required=True, dest='sections')
+        group.add_argument('--case', required=True, dest='case', help="a bowwave 2D+t case's case.json")
+        group.add_argument('--hull', required=True, dest='hull', help='the hull file (for B and D)')
+        group.add_argument('--x0', type=float, default=None, dest='x0',
+                           help='x/L at t = 0 (default: the first x of the case series.csv beside case.json)')
+        group.add_argument('--x-end', type=float, default=0.4, dest='x_end')
+        group.add_argument('--dx', type=float, default=None, dest='dx_override', help='override the case dx/L')
+        group.add_argument('--every', type=float, default=0.005, dest='every', help='output interval in x/L')
+
+    def consume_user_options(self):
+        o = self.options
+        case = json.load(open(o.case))
+        cfg, res = case['spec']['config'], case['result']
+        meta = header(o.hull)
+        lm = float(meta['length_m'])
+        self.beam, self.draft = float(meta['beam_m']) / lm, float(meta['draft_m']) / lm
+        self.fr = cfg['fr']
+        self.dx = o.dx_override or cfg['dx']
+        self.h = HDX * self.dx
+        self.c0 = res['c0_over_sqrt_gl']
+        self.width = cfg['width'] * self.beam
+        self.depth = cfg['depth'] * self.draft
+        if o.x0 is None:
+            import os
+            series = os.path.join(os.path.dirname(o.case), 'series.csv')
+            o.x0 = float(np.loadtxt(series, delimiter=',', skiprows=1, max_rows=1)[0])
+        self.x0 = o.x0
+        self.sec = Sections(o.sections)
+        # The girth of the largest section, for the size of the hull's array.
+        g = max(np.sum(np.hypot(np.diff(d[:, 0]), np.diff(d[:, 1]))) for d in self.sec.data)
+        self.nmax = LAYERS * (int(g / self.dx) + 8)
+        self.park = (-0.5 * self.width, -2.0 * self.depth)
+
+    def create_scheme(self):
+        return EDACScheme(fluids=['fluid'], solids=['walls', 'hull'], dim=2, c0=1.0, nu=0.0, rho0=1.0, h=1.0,
+                          pb=0.0, gy=-1.0, eps=0.0, clamp_p=True, alpha=0.02)
+
+    def configure_scheme(self):
+        dt = 0.125 * self.h / self.c0
+        t_end = (self.options.x_end - self.x0) / self.fr
+        pfreq = max(1, int(round(self.options.every / self.fr / dt)))
+        self.scheme.configure(h=self.h, c0=self.c0)
+        self.scheme.configure_solver(kernel=WendlandQuintic(dim=2), dt=dt, tf=t_end, pfreq=pfreq)
+
+    def create_equations(self):
+        eqns = self.scheme.get_equations()
+        for grp in eqns:
+            for i, e in enumerate(grp.equations):
+                if isinstance(e, XSPHCorrection):
+                    grp.equations[i] = XSPHCorrection(dest=e.dest, sources=e.sources, eps=0.0)
+        return eqns
+
+    def hull_points(self, t):
+        """Wall particles of the section at time t: positions, velocities, accelerations (n x 2 each)."""
+        s = self.sec.at(self.x0 + self.fr * t)
+        p, v, a = s[:, 0:2], self.fr * s[:, 2:4], self.fr ** 2 * s[:, 4:6]
+        seg = np.hypot(np.diff(p[:, 0]), np.diff(p[:, 1]))
+        arc = np.concatenate([[0.0], np.cumsum(seg)])
+        if arc[-1] < self.dx:
+            return np.zeros((0, 2)), np.zeros((0, 2)), np.zeros((0, 2))
+        sa = np.arange(0.5 * self.dx, arc[-1], self.dx)
+        q = np.column_stack([np.interp(sa, arc, p[:, k]) for k in range(2)])
+        vq = np.column_stack([np.interp(sa, arc, v[:, k]) for k in range(2)])
+        aq = np.column_stack([np.interp(sa, arc, a[:, k]) for k in range(2)])
+        tan = np.column_stack([np.interp(sa, arc, np.gradient(p[:, k], arc, edge_order=1)) for k in range(2)])
+        tan /= np.maximum(np.hypot(tan[:, 0], tan[:, 1]), 1e-300)[:, None]
+        normal = np.column_stack([tan[:, 1], -tan[:, 0]])  # into the fluid, as bowwave's N_2D (eq. 10.3)
+        layers = [q - (k + 0.5) * self.dx * normal for k in range(LAYERS)]
+        return np.vstack(layers), np.vstack([vq] * LAYERS), np.vstack([aq] * LAYERS)
+
+    def place_hull(self, t):
+        pa = self._hull
+        pos, vel, acc = self.hull_points(t)
+        n = min(len(pos), self.nmax)
+        if len(pos) > self.nmax:
+            print(f'warning: {len(pos)} hull wall particles, {self.nmax} slots')
+        pa.x[:] = self.park[0]
+        pa.y[:] = self.park[1]
+        pa.u[:] = pa.v[:] = pa.au[:] = pa.av[:] = 0.0
+        pa.x[:n], pa.y[:n] = pos[:n, 0], pos[:n, 1]
+        pa.u[:n], pa.v[:n] = vel[:n, 0], vel[:n, 1]
+        pa.au[:n], pa.av[:n] = acc[:n, 0], acc[:n, 1]
+
+    def create_particles(self):
+        dx, w, z = self.dx, self.width, self.depth
+        ny, nz = int(round(w / dx)), int(round(z / dx))
+        yf, zf = np.meshgrid((np.arange(ny) + 0.5) * dx, -z + (np.arange(nz) + 0.5) * dx)
+        yf, zf = yf.ravel(), zf.ravel()
+        # Outside the section at x0: the section's half-breadth at each height, by interpolation on its curve.
+        s = self.sec.at(self.x0)
+        inside = np.zeros_like(yf, dtype=bool)
+        if np.ptp(s[:, 1]) > 0:
+            zs, ys = s[:, 1], s[:, 0]
+            order = np.argsort(zs)
+            half = np.interp(zf, zs[order], ys[order], left=-1.0, right=-1.0)
+            inside = yf < half + 0.5 * dx
+        yf, zf = yf[~inside], zf[~inside]
+        top = 0.6 * self.draft + 0.5 * z
+        ws, zs_ = [], []
+        for k in range(LAYERS):
+            off = (k + 0.5) * dx
+            zz = -z + (np.arange(-LAYERS, int((z + top) / dx)) + 0.5) * dx
+            ws += [np.full_like(zz, -off), np.full_like(zz, w + off)]
+            zs_ += [zz, zz]
+            yy = (np.arange(ny) + 0.5) * dx
+            ws.append(yy)
+            zs_.append(np.full_like(yy, -z - off))
+        yw, zw = np.concatenate(ws), np.concatenate(zs_)
+        m = dx * dx
+        fluid = get_particle_array(name='fluid', x=yf, y=zf, h=self.h, m=m, rho=1.0, p=-zf)
+        walls = get_particle_array(name='walls', x=yw, y=zw, h=self.h, m=m, rho=1.0, p=0.0)
+        hull = get_particle_array(name='hull', x=np.full(self.nmax, self.park[0]),
+                                  y=np.full(self.nmax, self.park[1]), h=self.h, m=m, rho=1.0, p=0.0)
+        self.scheme.setup_properties([fluid, walls, hull])
+        fluid.p[:] = -zf
+        self._hull = hull
+        self.place_hull(0.0)
+        return [fluid, walls, hull]
+
+    def post_step(self, solver):
+        self.place_hull(solver.t)
+
+
+if __name__ == '__main__':
+    TwoDt().run()
