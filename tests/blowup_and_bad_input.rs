@@ -127,6 +127,22 @@ fn bad_case_files_name_the_file_and_field() {
             good.replace("[2.0, 0.0], [2.0, 1.5]]", "[2.0, 0.0], [2.0, 1e6]]"),
             "walls[0].points",
         ),
+        // Issue #36: a gauge outside the tank and a wall sensor outside the domain were accepted silently.
+        (
+            good.replace("[output]", "[[probes.gauge]]\nname = \"g\"\nx = 7.0\n\n[output]"),
+            "probes.gauge[0].x",
+        ),
+        (
+            good.replace(
+                "[output]",
+                "[[probes.gauge]]\nname = \"g\"\nx = 1.0\nbottom = -9.0\n\n[output]",
+            ),
+            "probes.gauge[0].bottom",
+        ),
+        (
+            good.replace("position = [1.0, 0.0]", "position = [1.0, 50.0]"),
+            "probes.pressure[0].position",
+        ),
     ];
     for (text, needle) in cases {
         let e = err_of(&text);

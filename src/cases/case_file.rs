@@ -227,12 +227,20 @@ pub struct PressureProbe {
     pub size: f64,
 }
 
-/// A wave gauge: free-surface elevation at abscissa `x` (m).
+/// A wave gauge at abscissa `x` (m): the water level (`eta_NAME`, m), the depth above the gauge's `bottom`
+/// (`depth_NAME`, m) and that depth over the case's length scale (`depthstar_NAME`); a dry gauge reads zero
+/// depth. `connected`: count only water reached from the bottom without crossing air (not spray, not a jet
+/// over a trough); otherwise the highest particle within dx of x (`sph::diagnostics::water_level`).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Gauge {
     pub name: String,
     pub x: f64,
+    /// Height of the floor under the gauge (m); default: the bottom of the domain.
+    #[serde(default)]
+    pub bottom: Option<f64>,
+    #[serde(default)]
+    pub connected: bool,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -440,6 +448,34 @@ impl CaseFile {
                 return Err(err(
                     &format!("probes.pressure[{k}].size"),
                     "a non-negative sensor size (m)",
+                ));
+            }
+        }
+        for (k, g) in self.probes.gauge.iter().enumerate() {
+            if !(g.x.is_finite() && g.x > self.domain.min[0] && g.x < self.domain.max[0]) {
+                return Err(err(
+                    &format!("probes.gauge[{k}].x"),
+                    &format!(
+                        "an abscissa inside the domain, between {} and {} m",
+                        self.domain.min[0], self.domain.max[0]
+                    ),
+                ));
+            }
+            let (lo, hi) = (self.domain.min[d - 1], self.domain.max[d - 1]);
+            if let Some(b) = g.bottom {
+                if !(b.is_finite() && b >= lo && b < hi) {
+                    return Err(err(
+                        &format!("probes.gauge[{k}].bottom"),
+                        &format!("a floor height inside the domain, between {lo} and {hi} m"),
+                    ));
+                }
+            }
+        }
+        for (k, p) in self.probes.pressure.iter().enumerate() {
+            if !inside(&p.position, 0.0) {
+                return Err(err(
+                    &format!("probes.pressure[{k}].position"),
+                    "a point inside the domain (m), on a wall",
                 ));
             }
         }

@@ -84,6 +84,8 @@ fn columns(case: &CaseFile, nwalls: usize) -> Vec<String> {
     }
     for g in &case.probes.gauge {
         c.push(format!("eta_{}", g.name));
+        c.push(format!("depth_{}", g.name));
+        c.push(format!("depthstar_{}", g.name));
     }
     for w in case.walls.iter().take(nwalls) {
         c.push(format!("fx_{}", w.name));
@@ -139,7 +141,11 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
         row.push(v / s.p_scale);
     }
     for g in &case.probes.gauge {
-        row.push(diagnostics::gauge(&sim.fluid, g.x, sim.cfg.dx).unwrap_or(f64::NAN));
+        let bottom = g.bottom.unwrap_or(case.domain.min[1]);
+        let eta = diagnostics::water_level(&sim.fluid, g.x, sim.cfg.dx, bottom, g.connected);
+        row.push(eta);
+        row.push(eta - bottom);
+        row.push((eta - bottom) / case.scales.length);
     }
     let forces = sim.boundary_forces();
     for f in forces.iter().take(case.walls.len()) {

@@ -52,6 +52,38 @@ pub fn gauge<const D: usize>(fluid: &Fluid<D>, x: f64, dx: f64) -> Option<f64> {
     top.is_finite().then_some(top + 0.5 * dx)
 }
 
+/// Water level at abscissa `x` (axis 0) for a wave gauge standing on `bottom` (height along the last axis):
+/// the particles within dx of x (the [`gauge`] window), sorted by height; with `connected`, only those
+/// reached from the bottom without crossing a vertical gap wider than 2 dx (air: spray, a jet above the
+/// trough of a breaker), the stack starting within 1.5 dx of the bottom; the level is the top of what is
+/// counted plus dx/2. A dry gauge reads `bottom` (zero depth), never NaN.
+pub fn water_level<const D: usize>(fluid: &Fluid<D>, x: f64, dx: f64, bottom: f64, connected: bool) -> f64 {
+    let mut z: Vec<f64> = fluid
+        .pos
+        .iter()
+        .filter(|p| (p[0] - x).abs() <= dx)
+        .map(|p| p[D - 1])
+        .collect();
+    if z.is_empty() {
+        return bottom;
+    }
+    if !connected {
+        return z.iter().copied().fold(f64::NEG_INFINITY, f64::max) + 0.5 * dx;
+    }
+    z.sort_by(f64::total_cmp);
+    if z[0] - bottom > 1.5 * dx {
+        return bottom;
+    }
+    let mut top = z[0];
+    for w in z.windows(2) {
+        if w[1] - w[0] > 2.0 * dx {
+            break;
+        }
+        top = w[1];
+    }
+    top + 0.5 * dx
+}
+
 /// Volume-weighted centroid and second central moments ⟨(x_d − x̄_d)²⟩ of the fluid.
 pub fn moments<const D: usize>(fluid: &Fluid<D>) -> (SVector<f64, D>, SVector<f64, D>) {
     let mut vol = 0.0;
@@ -73,6 +105,32 @@ pub fn moments<const D: usize>(fluid: &Fluid<D>) -> (SVector<f64, D>, SVector<f6
 
 #[cfg(test)]
 mod tests {
+    /// A column of water 10 rows deep on a floor at 0, a drop 5 dx above it, an empty stretch beside it:
+    /// the connected gauge reads the column, the plain one the drop, the dry one the floor.
+    #[test]
+    fn gauges_read_connected_water_and_zero_depth_when_dry() {
+        use super::water_level;
+        use crate::sph::particles::Fluid;
+        let dx = 0.01;
+        let mut pos = vec![];
+        for i in 0..4 {
+            for j in 0..10 {
+                pos.push(nalgebra::Vector2::new((i as f64 + 0.5) * dx, (j as f64 + 0.5) * dx));
+            }
+        }
+        pos.push(nalgebra::Vector2::new(0.015, 0.15));
+        let mut fluid = Fluid::<2>::default();
+        for p in pos {
+            fluid.push(p, nalgebra::Vector2::zeros(), 1000.0, 0.1, 0.0);
+        }
+        let connected = water_level(&fluid, 0.02, dx, 0.0, true);
+        assert!((connected - 0.10).abs() < 1e-12, "{connected}");
+        let plain = water_level(&fluid, 0.02, dx, 0.0, false);
+        assert!((plain - 0.155).abs() < 1e-12, "{plain}");
+        assert_eq!(water_level(&fluid, 0.5, dx, 0.0, true), 0.0);
+        assert_eq!(water_level(&fluid, 0.5, dx, 0.0, false), 0.0);
+    }
+
     use super::*;
     use nalgebra::Vector2;
 
