@@ -230,3 +230,27 @@ fn a_case_named_like_a_built_in_with_other_probes_runs_without_its_checks() {
     assert!(out.join("dam-break_energy.png").exists());
     let _ = std::fs::remove_dir_all(&out);
 }
+
+/// Issue #36: a case's times may be written in its own non-dimensional time t* = t √(g/length); they are the
+/// same run as the times in seconds.
+#[test]
+fn times_in_t_star_are_read_as_seconds() {
+    let good = cases::builtin::builtin_text("hydrostatic").unwrap();
+    let secs = CaseFile::parse(good, "s.toml").unwrap();
+    let f = (secs.scales.length / secs.gravity_magnitude()).sqrt();
+    let star = good
+        .replace(
+            &format!("end_time = {}", secs.output.end_time),
+            &format!("end_time = {}\ntime_unit = \"t_star\"", secs.output.end_time / f),
+        )
+        .replace(
+            &format!("series_every = {}", secs.output.series_every),
+            &format!("series_every = {}", secs.output.series_every / f),
+        );
+    assert!(star.contains("t_star"), "the replacement found its line");
+    let star = CaseFile::parse(&star, "star.toml").unwrap();
+    assert!((star.output.end_time - secs.output.end_time).abs() < 1e-12 * secs.output.end_time);
+    assert!((star.output.series_every - secs.output.series_every).abs() < 1e-12 * secs.output.series_every);
+    let e = err_of(&good.replace("[output]", "[output]\ntime_unit = \"minutes\""));
+    assert!(e.contains("time_unit") || e.contains("unknown variant"), "{e}");
+}

@@ -246,13 +246,28 @@ pub struct Gauge {
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Output {
-    /// End time (s).
+    /// End time (in `time_unit`).
     pub end_time: f64,
-    /// Time-series sampling interval (s).
+    /// Time-series sampling interval (in `time_unit`).
     pub series_every: f64,
-    /// VTK snapshot interval (s); 0 turns snapshots off.
+    /// VTK snapshot interval (in `time_unit`); 0 turns snapshots off.
     #[serde(default)]
     pub vtk_every: f64,
+    /// The unit of the times of the case file (these three and `probes.cavity.after`): seconds (`"s"`, the
+    /// default) or t* = t √(g/length) (`"t_star"`), the case's own non-dimensional time. They are converted to
+    /// seconds when the case is read.
+    #[serde(default)]
+    pub time_unit: TimeUnit,
+}
+
+/// The unit of a case file's times.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum TimeUnit {
+    #[default]
+    #[serde(rename = "s")]
+    Seconds,
+    #[serde(rename = "t_star")]
+    TStar,
 }
 
 impl CaseFile {
@@ -265,9 +280,24 @@ impl CaseFile {
 
     /// Parses and checks a case from TOML text; `file` names it in errors.
     pub fn parse(text: &str, file: &str) -> Result<Self, InputError> {
-        let case: CaseFile = parse_toml(text, file)?;
+        let mut case: CaseFile = parse_toml(text, file)?;
         case.check(file)?;
+        case.times_in_seconds();
         Ok(case)
+    }
+
+    /// Converts the case's times to seconds (`output.time_unit`), after the checks.
+    fn times_in_seconds(&mut self) {
+        if self.output.time_unit == TimeUnit::TStar {
+            let f = (self.scales.length / self.gravity_magnitude()).sqrt();
+            self.output.end_time *= f;
+            self.output.series_every *= f;
+            self.output.vtk_every *= f;
+            if let Some(c) = &mut self.probes.cavity {
+                c.after *= f;
+            }
+            self.output.time_unit = TimeUnit::Seconds;
+        }
     }
 
     /// Reads a case file from disk.
@@ -481,19 +511,25 @@ impl CaseFile {
         }
         if let Some(c) = &self.probes.cavity {
             if !(c.after.is_finite() && c.after >= 0.0) {
-                return Err(err("probes.cavity.after", "a non-negative time in seconds"));
+                return Err(err("probes.cavity.after", "a non-negative time (in output.time_unit)"));
             }
         }
         if !pos(self.output.end_time) {
-            return Err(err("output.end_time", "a positive end time in seconds"));
+            return Err(err(
+                "output.end_time",
+                "a positive end time (in output.time_unit: seconds, or t_star)",
+            ));
         }
         if !pos(self.output.series_every) {
-            return Err(err("output.series_every", "a positive sampling interval in seconds"));
+            return Err(err(
+                "output.series_every",
+                "a positive sampling interval (in output.time_unit)",
+            ));
         }
         if !(self.output.vtk_every.is_finite() && self.output.vtk_every >= 0.0) {
             return Err(err(
                 "output.vtk_every",
-                "a non-negative interval in seconds (0: no snapshots)",
+                "a non-negative interval (in output.time_unit; 0: no snapshots)",
             ));
         }
         Ok(())
