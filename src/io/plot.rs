@@ -706,26 +706,23 @@ pub fn tornado(
             .x_label_area_size(45)
             .y_label_area_size(190)
             .build_cartesian_2d((lo - pad)..(hi + pad), 0f64..n as f64)?;
-        let labels: Vec<String> = bars.iter().map(|b| b.label.clone()).collect();
         chart
             .configure_mesh()
             .disable_y_mesh()
+            .disable_y_axis()
             .x_desc(xlabel)
-            .y_labels(n)
-            .y_label_formatter(&|y| {
-                let k = (n as f64 - y - 0.5).round();
-                if (n as f64 - y - 0.5 - k).abs() < 0.1 && k >= 0.0 {
-                    labels.get(k as usize).cloned().unwrap_or_default()
-                } else {
-                    String::new()
-                }
-            })
             .label_style(("sans-serif", 15))
             .axis_desc_style(("sans-serif", 17))
             .draw()?;
         let font = ("sans-serif", 14).into_font();
         for (k, b) in bars.iter().enumerate() {
             let y = n as f64 - k as f64 - 0.5;
+            let (_, py) = chart.backend_coord(&(lo - pad, y));
+            root.draw(&Text::new(
+                b.label.clone(),
+                (20, py - 8),
+                ("sans-serif", 16).into_font(),
+            ))?;
             for (end, colour) in [(&b.low, RGBColor(31, 119, 180)), (&b.high, RGBColor(255, 127, 14))] {
                 if !end.0.is_finite() {
                     continue;

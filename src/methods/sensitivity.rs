@@ -5,10 +5,11 @@
 //! linear superposition of the parameters' extreme effects labelled as an estimate, not a run.
 
 use crate::io::atomic::write_atomic;
+use crate::io::csv_table::Table;
 use crate::io::plot::{tornado, TornadoBar};
 use crate::reference::published_jet;
 use crate::studies::collect::RESOLVED_JET_PARTICLES as TRUSTED_JET_PARTICLES;
-use crate::studies::runner::{collect_finished, CaseRecord};
+use crate::studies::runner::{case_dir, collect_finished, CaseRecord};
 use crate::studies::study_file::{CaseHull, Study};
 use crate::twodt::result::PlungeMetrics;
 use std::fmt::Write as _;
@@ -24,47 +25,70 @@ pub struct Row {
     pub value: f64,
     pub baseline_value: f64,
     pub plunge: Option<PlungeMetrics>,
+    /// The highest free-surface elevation of the passage, η_max/D (the first crest, at the hull), and the x/L
+    /// where it is reached, from the case's `eta.csv`: resolved at spacings where the plunge is not.
+    pub crest: Option<(f64, f64)>,
     pub particles: usize,
     pub steps: u64,
     pub wall_seconds: f64,
     pub cpu_seconds: f64,
 }
 
-/// A metric of a plunge, with its name in the table and its label on a chart.
+/// A metric of a case, with its name in the table and its label on a chart.
 pub struct Metric {
     pub key: &'static str,
     pub label: &'static str,
-    pub get: fn(&PlungeMetrics) -> f64,
+    pub get: fn(&Row) -> Option<f64>,
     /// The published value of the same hull and Froude number, if Table 10.1/10.2 gives it.
     pub published: Option<fn(&crate::reference::PublishedJet) -> f64>,
+    /// A plunge metric (its jet may be too small to trust, and a case without a plunge has none).
+    pub of_plunge: bool,
 }
 
-/// The charted metrics: plunge position, jet height and circulation.
+/// The charted metrics: plunge position, jet height and circulation; the highest crest and where it is.
 pub fn metrics() -> Vec<Metric> {
     vec![
         Metric {
             key: "x_plunge_over_l",
             label: "x_plunge / L",
-            get: |p| p.x_plunge_over_l,
+            get: |r| r.plunge.as_ref().map(|p| p.x_plunge_over_l),
             published: Some(|j| j.x_plunge_over_l),
+            of_plunge: true,
         },
         Metric {
             key: "y_plunge_over_l",
             label: "y_plunge / L",
-            get: |p| p.y_plunge_over_l,
+            get: |r| r.plunge.as_ref().map(|p| p.y_plunge_over_l),
             published: Some(|j| j.y_plunge_over_l),
+            of_plunge: true,
         },
         Metric {
             key: "h_pj_over_d",
             label: "H_pj / D",
-            get: |p| p.h_pj_over_d,
+            get: |r| r.plunge.as_ref().map(|p| p.h_pj_over_d),
             published: Some(|j| j.h_pj_over_d),
+            of_plunge: true,
         },
         Metric {
             key: "gamma_over_ud",
             label: "Γ / (U D)",
-            get: |p| p.gamma_over_ud,
+            get: |r| r.plunge.as_ref().map(|p| p.gamma_over_ud),
             published: None,
+            of_plunge: true,
+        },
+        Metric {
+            key: "crest_max_over_d",
+            label: "highest crest η_max / D",
+            get: |r| r.crest.map(|c| c.0),
+            published: None,
+            of_plunge: false,
+        },
+        Metric {
+            key: "x_crest_max_over_l",
+            label: "x/L of the highest crest",
+            get: |r| r.crest.map(|c| c.1),
+            published: None,
+            of_plunge: false,
         },
     ]
 }
@@ -79,10 +103,21 @@ pub fn rows(study: &Study, out: &Path) -> anyhow::Result<Vec<Row>> {
         out.display(),
         study.file.display()
     );
-    recs.iter().map(row).collect()
+    recs.iter().map(|r| row(r, &case_dir(out, &r.spec))).collect()
 }
 
-fn row(r: &CaseRecord) -> anyhow::Result<Row> {
+/// The highest η/D over the passage and its x/L, from a case's `eta.csv` (None without one).
+fn crest(dir: &Path) -> Option<(f64, f64)> {
+    let t = Table::read(&dir.join("eta.csv")).ok()?;
+    let (x, e) = (t.column("x_over_l")?, t.column("eta_over_d")?);
+    x.iter()
+        .zip(&e)
+        .filter(|(_, e)| e.is_finite())
+        .map(|(x, e)| (*e, *x))
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+fn row(r: &CaseRecord, dir: &Path) -> anyhow::Result<Row> {
     let (parameter, value, baseline_value) = match &r.spec.hull {
         CaseHull::File(_) => (String::new(), f64::NAN, f64::NAN),
         CaseHull::Variant { generator, set } => {
@@ -104,6 +139,7 @@ fn row(r: &CaseRecord) -> anyhow::Result<Row> {
         value,
         baseline_value,
         plunge: r.result.plunge.clone(),
+        crest: crest(dir),
         particles: r.result.particles,
         steps: r.result.steps,
         wall_seconds: r.result.wall_seconds,
@@ -115,14 +151,14 @@ fn row(r: &CaseRecord) -> anyhow::Result<Row> {
 pub fn table(rows: &[Row]) -> String {
     let mut s = String::from(
         "case,parameter,value,baseline_value,plunged,x_plunge_over_l,y_plunge_over_l,h_pj_over_d,gamma_over_ud,\
-         jet_particles,particles,steps,wall_seconds,cpu_seconds\n",
+         jet_particles,crest_max_over_d,x_crest_max_over_l,particles,steps,wall_seconds,cpu_seconds\n",
     );
     for r in rows {
         let p = r.plunge.as_ref();
         let f = |g: fn(&PlungeMetrics) -> f64| p.map(|p| format!("{}", g(p))).unwrap_or_default();
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{:.1},{:.1}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.1},{:.1}",
             r.case,
             if r.parameter.is_empty() {
                 "approximation"
@@ -145,6 +181,8 @@ pub fn table(rows: &[Row]) -> String {
             f(|p| p.h_pj_over_d),
             f(|p| p.gamma_over_ud),
             p.map(|p| p.jet_particles.to_string()).unwrap_or_default(),
+            r.crest.map(|c| c.0.to_string()).unwrap_or_default(),
+            r.crest.map(|c| c.1.to_string()).unwrap_or_default(),
             r.particles,
             r.steps,
             r.wall_seconds,
@@ -171,15 +209,12 @@ pub struct Band {
 /// The band of `metric` over the rows; `None` when the approximation itself did not plunge or is missing.
 pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
     let base_row = rows.iter().find(|r| r.parameter.is_empty())?;
-    let base = base_row.plunge.as_ref().map(metric.get)?;
-    let mark = |p: &PlungeMetrics| {
-        if p.jet_particles < TRUSTED_JET_PARTICLES {
-            "*"
-        } else {
-            ""
-        }
+    let base = (metric.get)(base_row)?;
+    let mark = |r: &Row| match &r.plunge {
+        Some(p) if metric.of_plunge && p.jet_particles < TRUSTED_JET_PARTICLES => "*",
+        _ => "",
     };
-    let base_mark = base_row.plunge.as_ref().map(mark).unwrap_or("");
+    let base_mark = mark(base_row);
     let mut params: Vec<&str> = rows
         .iter()
         .filter(|r| !r.parameter.is_empty())
@@ -195,8 +230,8 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
         let of_k: Vec<&Row> = rows.iter().filter(|r| r.parameter == k).collect();
         let mut pts: Vec<(f64, f64, &str)> = vec![(of_k[0].baseline_value, base, base_mark)];
         for r in of_k {
-            match &r.plunge {
-                Some(p) => pts.push((r.value, (metric.get)(p), mark(p))),
+            match (metric.get)(r) {
+                Some(v) => pts.push((r.value, v, mark(r))),
                 None => no_plunge.push(format!("{k} = {}", r.value)),
             }
         }
@@ -251,6 +286,7 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row]) -> anyhow::Result<Ve
          not a run.\n\n| metric | approximation | one at a time | superposed (estimate) | published | inside one-at-a-time? |\n|---|---|---|---|---|---|\n",
         rows.len()
     );
+    let mut notes = String::new();
     for m in metrics() {
         let Some(b) = band(rows, &m) else { continue };
         let pubv = published.as_ref().zip(m.published).map(|(j, f)| f(j));
@@ -275,17 +311,24 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row]) -> anyhow::Result<Ve
             pubv.map(|v| format!("{v:.4}")).unwrap_or_else(|| "–".into()),
             inside.unwrap_or("–")
         );
-        if !b.no_plunge.is_empty() {
-            let _ = writeln!(md, "\nNo plunge (left out of the bars): {}.\n", b.no_plunge.join(", "));
+        if !b.no_plunge.is_empty() && notes.is_empty() {
+            notes = format!(
+                "\nNo plunge, so no plunge metric (left out of their bars): {}.\n",
+                b.no_plunge.join(", ")
+            );
         }
         let marks: Vec<(String, f64)> = pubv.map(|v| vec![(format!("published {v:.3}"), v)]).unwrap_or_default();
         let png = dir.join(format!("tornado_{}.png", m.key));
         tornado(
             &png,
-            &format!(
-                "{hull} Fr {fr}: {} by hull parameter (* jet < {TRUSTED_JET_PARTICLES} particles)",
-                m.label
-            ),
+            &if m.of_plunge {
+                format!(
+                    "{hull} Fr {fr}: {} by hull parameter (* jet < {TRUSTED_JET_PARTICLES} particles)",
+                    m.label
+                )
+            } else {
+                format!("{hull} Fr {fr}: {} by hull parameter", m.label)
+            },
             m.label,
             b.baseline,
             &b.bars,
@@ -293,6 +336,7 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row]) -> anyhow::Result<Ve
         )?;
         files.push(png);
     }
+    md.push_str(&notes);
     let p = dir.join("band.md");
     write_atomic(&p, md.as_bytes())?;
     files.push(p);
@@ -314,6 +358,7 @@ mod tests {
                 jet_particles: 150,
                 ..Default::default()
             }),
+            crest: None,
             particles: 1,
             steps: 1,
             wall_seconds: 1.0,
