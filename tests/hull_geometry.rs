@@ -289,3 +289,24 @@ fn a_trimmed_variant_keeps_its_displacement_and_lifts_its_bow() {
     assert!(ft.stem_keel_z > fr.stem_keel_z && ft.entry > fr.entry && ft.deepest_keel > fr.deepest_keel);
     assert!(trimmed.meta.notes["attitude"].contains("trim 1.000 deg"));
 }
+
+/// The shipped Alliance file honours what the thesis states of it (§10.1.4, Table 10.4), measured on its
+/// surface: Lpp 82 m, B 15.2 m at the waterline, T 5.2 m, displacement 2920 t (sea water, 1.025 t/m³), each
+/// within 1 % (the hydrostatics of 41 stations: Wigley's Cb is within 2e-5 from 21).
+#[test]
+fn alliance_file_honours_the_thesis_particulars() {
+    let h = HullOffsets::read(std::path::Path::new("hulls/alliance.csv")).unwrap();
+    let l = h.meta.length_m;
+    assert_eq!(l, 82.0);
+    let (hy, _) = hydrostatics(&HullSurface::new(&h), 400, 1500);
+    let tonnes = hy.volume * l.powi(3) * 1.025;
+    for (name, ours, thesis) in [
+        ("B (m)", hy.beam * l, 15.2),
+        ("T (m)", hy.draft * l, 5.2),
+        ("displacement (t)", tonnes, 2920.0),
+    ] {
+        println!("alliance: {name} = {ours:.3}, thesis {thesis}");
+        assert!((ours - thesis).abs() < 0.01 * thesis, "{name}: {ours} against {thesis}");
+    }
+    assert!(h.meta.notes["honours"].contains("2920 t"));
+}
