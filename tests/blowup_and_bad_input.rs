@@ -254,3 +254,30 @@ fn times_in_t_star_are_read_as_seconds() {
     let e = err_of(&good.replace("[output]", "[output]\ntime_unit = \"minutes\""));
     assert!(e.contains("time_unit") || e.contains("unknown variant"), "{e}");
 }
+
+/// Issue #36: a case's own references are checked when the case is read: a column no probe writes, and a
+/// missing or malformed file, are errors naming the field.
+#[test]
+fn references_name_a_probe_column_and_a_readable_file() {
+    let dir = std::env::temp_dir().join(format!("bowwave-refs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = cases::builtin::builtin_text("hydrostatic").unwrap();
+    let with = |column: &str, file: &str| format!("{good}\n[[references]]\ncolumn = \"{column}\"\nfile = \"{file}\"\n");
+    let e = err_of(&with("pstar_nowhere", "r.csv"));
+    assert!(e.contains("references[0].column") && e.contains("pstar_bottom"), "{e}");
+    let case = dir.join("case.toml");
+    std::fs::write(&case, with("pstar_bottom", "missing.csv")).unwrap();
+    let e = CaseFile::read(&case).unwrap_err().to_string();
+    assert!(e.contains("references[0].file") && e.contains("missing.csv"), "{e}");
+    std::fs::write(dir.join("bad.csv"), "time,value\nabc,def\n").unwrap();
+    std::fs::write(&case, with("pstar_bottom", "bad.csv")).unwrap();
+    let e = CaseFile::read(&case).unwrap_err().to_string();
+    assert!(
+        e.contains("references[0].file") && e.contains("two numeric columns"),
+        "{e}"
+    );
+    std::fs::write(dir.join("ok.csv"), "# t*, p*\n0, 1\n10, 1\n").unwrap();
+    std::fs::write(&case, with("pstar_bottom", "ok.csv")).unwrap();
+    assert_eq!(CaseFile::read(&case).unwrap().references.len(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}

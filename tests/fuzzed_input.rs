@@ -174,6 +174,8 @@ fn project(rel: &str) -> PathBuf {
 }
 
 const FILE: &str = "damaged.toml";
+/// A user's case with references (its reference files are read only by `CaseFile::read`, not from text).
+const EXAMPLE_WITH_REFERENCES: &str = include_str!("../cases/examples/dam-break-buchner.toml");
 
 /// 192 damaged files per property from a fixed seed, so that CI runs the same files every time;
 /// `PROPTEST_CASES=N PROPTEST_RNG_SEED=S` runs other and more of them (how the bugs behind the
@@ -197,10 +199,14 @@ proptest! {
     /// a few steps (or stops with a diagnosis) without a panic.
     #[test]
     fn damaged_case_files_give_errors_not_panics(
-        which in 0..bowwave::cases::builtin::BUILTIN.len(),
+        which in 0..bowwave::cases::builtin::BUILTIN.len() + 1,
         edits in prop::collection::vec(edit(), 1..4),
     ) {
-        let text = apply(bowwave::cases::builtin::BUILTIN[which].1, &edits);
+        // The built-ins, and the example with gauges' and references' sections (issue #36).
+        let original = bowwave::cases::builtin::BUILTIN
+            .get(which)
+            .map_or(EXAMPLE_WITH_REFERENCES, |b| b.1);
+        let text = apply(original, &edits);
         match no_panic("CaseFile::parse", &text, || CaseFile::parse(&text, FILE))? {
             Err(e) => prop_assert!(e.to_string().contains(FILE), "error without the file's name: {e}"),
             Ok(case) => {

@@ -30,6 +30,55 @@ pub struct CaseFile {
     #[serde(default)]
     pub probes: Probes,
     pub output: Output,
+    /// Measurements to compare a series column with (`validation::references`).
+    #[serde(default)]
+    pub references: Vec<ReferenceSpec>,
+    /// The folder of the case file, against which reference files are resolved (set by [`CaseFile::read`];
+    /// the working directory for a case given as text).
+    #[serde(skip)]
+    pub dir: Option<std::path::PathBuf>,
+}
+
+/// A measured series to compare one of the case's series columns with: a CSV whose first two numeric
+/// columns are time and value (header and `#` lines skipped).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReferenceSpec {
+    /// The series column compared (`pstar_NAME`, `p_NAME`, `eta_NAME`, `depth_NAME`, `depthstar_NAME`,
+    /// `front`, `front_star`, ...).
+    pub column: String,
+    /// The CSV file, relative to the case file.
+    pub file: String,
+    /// The reference's time: `"t_star"` (t √(g/length), the default) or `"t"` (s).
+    #[serde(default = "t_star")]
+    pub time: String,
+    /// Added to the reference's times before comparing (in `time`'s unit): an experiment's time origin.
+    #[serde(default)]
+    pub shift: f64,
+    /// The reference's values are multiplied by this to be in the column's unit.
+    #[serde(default = "one")]
+    pub scale: f64,
+    /// Time window of the comparison (in `time`'s unit); default: the reference's whole span.
+    #[serde(default)]
+    pub window: Option<[f64; 2]>,
+    /// Largest mean |ours − reference| over the window that passes (in the column's unit); none: reported.
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+}
+
+fn t_star() -> String {
+    "t_star".into()
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+impl ReferenceSpec {
+    /// The reference file's path.
+    pub fn path(&self, case: &CaseFile) -> std::path::PathBuf {
+        case.dir.clone().unwrap_or_default().join(&self.file)
+    }
 }
 
 fn two() -> usize {
@@ -302,7 +351,29 @@ impl CaseFile {
 
     /// Reads a case file from disk.
     pub fn read(path: &std::path::Path) -> Result<Self, InputError> {
-        Self::parse(&read_text(path)?, &path.display().to_string())
+        let mut case = Self::parse(&read_text(path)?, &path.display().to_string())?;
+        case.dir = path.parent().map(|p| p.to_path_buf());
+        super::reference_file::check_files(&case, &path.display().to_string())?;
+        Ok(case)
+    }
+
+    /// The series columns a probe, gauge or the front writes (those a reference may name).
+    pub fn probe_columns(&self) -> Vec<String> {
+        let mut c = vec![];
+        if self.probes.front {
+            c.extend(["front".to_string(), "front_star".to_string()]);
+        }
+        for p in &self.probes.pressure {
+            c.extend([format!("p_{}", p.name), format!("pstar_{}", p.name)]);
+        }
+        for g in &self.probes.gauge {
+            c.extend([
+                format!("eta_{}", g.name),
+                format!("depth_{}", g.name),
+                format!("depthstar_{}", g.name),
+            ]);
+        }
+        c
     }
 
     fn check(&self, file: &str) -> Result<(), InputError> {
@@ -507,6 +578,44 @@ impl CaseFile {
                     &format!("probes.pressure[{k}].position"),
                     "a point inside the domain (m), on a wall",
                 ));
+            }
+        }
+        let columns = self.probe_columns();
+        for (k, r) in self.references.iter().enumerate() {
+            if !columns.contains(&r.column) {
+                return Err(err(
+                    &format!("references[{k}].column"),
+                    &format!(
+                        "a series column of one of the case's probes or gauges ({})",
+                        if columns.is_empty() {
+                            "the case has none".to_string()
+                        } else {
+                            columns.join(", ")
+                        }
+                    ),
+                ));
+            }
+            if r.file.trim().is_empty() {
+                return Err(err(&format!("references[{k}].file"), "a CSV file name"));
+            }
+            if r.time != "t" && r.time != "t_star" {
+                return Err(err(&format!("references[{k}].time"), "\"t\" (s) or \"t_star\""));
+            }
+            if !(r.shift.is_finite() && r.scale.is_finite() && r.scale != 0.0) {
+                return Err(err(
+                    &format!("references[{k}]"),
+                    "a finite `shift` and a finite, non-zero `scale`",
+                ));
+            }
+            if let Some([a, b]) = r.window {
+                if !(a.is_finite() && b.is_finite() && a < b) {
+                    return Err(err(&format!("references[{k}].window"), "[start, end] with start < end"));
+                }
+            }
+            if let Some(t) = r.tolerance {
+                if !(t.is_finite() && t >= 0.0) {
+                    return Err(err(&format!("references[{k}].tolerance"), "a non-negative number"));
+                }
             }
         }
         if let Some(c) = &self.probes.cavity {

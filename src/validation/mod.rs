@@ -16,6 +16,7 @@ mod hydrostatic;
 mod jets;
 mod martin_moyce;
 mod plots;
+pub mod references;
 pub mod tank_3d;
 
 pub use dam_break::{
@@ -120,8 +121,16 @@ mod erased {
     }
 }
 
-/// The checks of a built-in experiment ([`builtin_experiment`]), if the case is one and has any.
+/// The checks of a run: a built-in experiment's ([`builtin_experiment`]) and the case's own references
+/// ([`references`]); `None` when it has neither.
 pub fn checks(r: &RunResult) -> Option<Vec<Check>> {
+    let mut c = builtin_checks(r).unwrap_or_default();
+    c.extend(references::reference_checks(r));
+    (!c.is_empty()).then_some(c)
+}
+
+/// The checks of a built-in experiment ([`builtin_experiment`]), if the case is one and has any.
+fn builtin_checks(r: &RunResult) -> Option<Vec<Check>> {
     Some(match builtin_experiment(&r.case)? {
         "hydrostatic" => hydrostatic(r),
         "elliptic-drop" => elliptic_drop(r),
@@ -199,8 +208,8 @@ pub fn run_and_report(case: &CaseFile, out: &Path, opts: RunOptions) -> anyhow::
         Some(c) if r.blowup.is_none() && end.is_none() => print_checks(&c),
         Some(_) => {}
         None => println!(
-            "{}: no checks (only the built-in experiments have references here; a case that keeps a built-in's \
-             name but changes its probes or geometry is checked against nothing)",
+            "{}: no checks (no `[[references]]` in the case, and not a built-in experiment: a case that keeps a \
+             built-in's name but changes its probes or geometry is not checked against the built-in's references)",
             case.name
         ),
     }

@@ -26,6 +26,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
         }],
     )?;
     files.push(p);
+    files.extend(super::references::reference_plots(r, dir)?);
     match super::builtin_experiment(&r.case).unwrap_or("") {
         "dam-break" => {
             let res = r.case.scales.length / r.dx;
