@@ -75,7 +75,7 @@ pub(super) fn mm_column_height(r: &RunResult) -> Vec<f64> {
     col(r, "eta_column").iter().map(|e| e / two_a).collect()
 }
 
-/// Martin–Moyce (n² = 2): the surge front's speed dZ/dT over [`MM_SPEED_WINDOW`] within 10 % of theirs, with
+/// Martin–Moyce (n² = 2): the surge front's speed dZ/dT over Table 2's T in [1.1, 2.5] within 10 % of theirs, with
 /// the position error |x − x_exp|/x_exp at every T ≤ 2.5, T = √2 t √(g/a), reported beside it; the residual
 /// column height h/(2a) against their Table 6 within 1/18, the spacing
 /// of the markers it was read from (their values are multiples of 1/18 ≈ 0.056); and, reported only, the
