@@ -29,7 +29,7 @@ pub struct StudyFile {
     pub config: toml::Table,
     /// Options of one case, `[case.N]` for the N-th Froude number (1-based), over `[config]`; besides the
     /// 2D+t options, its own hull (`hull = "FILE"`) or a generated variant (`[case.N.hull_variant]`,
-    /// `generator = "athena"` and the generator parameters changed, e.g. `flare = 20`).
+    /// `generator = "athena"` and the generator parameters changed, e.g. `flare_angle = 20`).
     #[serde(default)]
     pub case: BTreeMap<String, toml::Table>,
 }
