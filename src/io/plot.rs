@@ -696,6 +696,8 @@ pub fn tornado(
         hi = hi.max(v);
     }
     let pad = 0.08 * (hi - lo).max(1e-9);
+    // Room on the right for the end labels.
+    let right = 0.22 * (hi - lo).max(1e-9);
     let mut buf = vec![0u8; (w * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut buf, (w, h)).into_drawing_area();
@@ -704,8 +706,8 @@ pub fn tornado(
             .caption(title, ("sans-serif", 22))
             .margin(15)
             .x_label_area_size(45)
-            .y_label_area_size(190)
-            .build_cartesian_2d((lo - pad)..(hi + pad), 0f64..n as f64)?;
+            .y_label_area_size(290)
+            .build_cartesian_2d((lo - pad)..(hi + right), 0f64..n as f64)?;
         chart
             .configure_mesh()
             .disable_y_mesh()
@@ -724,7 +726,12 @@ pub fn tornado(
                 ("sans-serif", 16).into_font(),
             ))?;
             for (end, colour) in [(&b.low, RGBColor(31, 119, 180)), (&b.high, RGBColor(255, 127, 14))] {
-                if !end.0.is_finite() {
+                // An end at the baseline is the approximation itself: labelled once, on the low side.
+                let at_base = end.0 == baseline;
+                if !end.0.is_finite() || (at_base && std::ptr::eq(end, &b.high) && b.low.0 == baseline) {
+                    continue;
+                }
+                if at_base && !(b.low.0 == baseline && b.high.0 == baseline) {
                     continue;
                 }
                 chart.draw_series(std::iter::once(Rectangle::new(

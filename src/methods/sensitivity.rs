@@ -229,10 +229,14 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
     for k in params {
         let of_k: Vec<&Row> = rows.iter().filter(|r| r.parameter == k).collect();
         let mut pts: Vec<(f64, f64, &str)> = vec![(of_k[0].baseline_value, base, base_mark)];
+        let mut missing = vec![];
         for r in of_k {
             match (metric.get)(r) {
                 Some(v) => pts.push((r.value, v, mark(r))),
-                None => no_plunge.push(format!("{k} = {}", r.value)),
+                None => {
+                    no_plunge.push(format!("{k} = {}", r.value));
+                    missing.push(r.value.to_string());
+                }
             }
         }
         let (Some(min), Some(max)) = (
@@ -247,7 +251,11 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
         sum_pos += (max.1 - base).max(0.0);
         let label = |p: (f64, f64, &str)| format!("{} {}{}", short(p.0), format_value(p.1), p.2);
         bars.push(TornadoBar {
-            label: k.to_string(),
+            label: if missing.is_empty() {
+                k.to_string()
+            } else {
+                format!("{k} (none at {})", missing.join(", "))
+            },
             low: (min.1, label(min)),
             high: (max.1, label(max)),
         });
