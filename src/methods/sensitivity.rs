@@ -397,7 +397,11 @@ mod tests {
             flare.low.1,
             flare.high.1
         );
-        let trim = b.bars.iter().find(|b| b.label == "trim").unwrap();
+        let trim = b.bars.iter().find(|b| b.label.starts_with("trim")).unwrap();
+        assert_eq!(
+            trim.label, "trim (none at 1.5)",
+            "a value without a plunge is named on its bar"
+        );
         assert_eq!((trim.low.0, trim.high.0), (0.30, 0.32));
         assert_eq!(b.one_at_a_time, (0.25, 0.35));
         assert!((b.superposed.0 - 0.25).abs() < 1e-12 && (b.superposed.1 - 0.37).abs() < 1e-12);
