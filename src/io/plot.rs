@@ -725,13 +725,14 @@ pub fn tornado(
                 (20, py - 8),
                 ("sans-serif", 16).into_font(),
             ))?;
-            for (end, colour) in [(&b.low, RGBColor(31, 119, 180)), (&b.high, RGBColor(255, 127, 14))] {
-                // An end at the baseline is the approximation itself: labelled once, on the low side.
+            for (is_low, end, colour) in [
+                (true, &b.low, RGBColor(31, 119, 180)),
+                (false, &b.high, RGBColor(255, 127, 14)),
+            ] {
+                // An end at the baseline is the approximation itself: labelled only when the whole bar is there,
+                // once, on the low side.
                 let at_base = end.0 == baseline;
-                if !end.0.is_finite() || (at_base && std::ptr::eq(end, &b.high) && b.low.0 == baseline) {
-                    continue;
-                }
-                if at_base && !(b.low.0 == baseline && b.high.0 == baseline) {
+                if !end.0.is_finite() || (at_base && !(is_low && b.high.0 == baseline)) {
                     continue;
                 }
                 chart.draw_series(std::iter::once(Rectangle::new(

@@ -58,6 +58,9 @@ pub fn gauge<const D: usize>(fluid: &Fluid<D>, x: f64, dx: f64) -> Option<f64> {
 /// trough of a breaker), the stack starting within 1.5 dx of the bottom; the level is the top of what is
 /// counted plus dx/2. A dry gauge reads `bottom` (zero depth), never NaN.
 pub fn water_level<const D: usize>(fluid: &Fluid<D>, x: f64, dx: f64, bottom: f64, connected: bool) -> f64 {
+    if !connected {
+        return gauge(fluid, x, dx).unwrap_or(bottom);
+    }
     let mut z: Vec<f64> = fluid
         .pos
         .iter()
@@ -66,9 +69,6 @@ pub fn water_level<const D: usize>(fluid: &Fluid<D>, x: f64, dx: f64, bottom: f6
         .collect();
     if z.is_empty() {
         return bottom;
-    }
-    if !connected {
-        return z.iter().copied().fold(f64::NEG_INFINITY, f64::max) + 0.5 * dx;
     }
     z.sort_by(f64::total_cmp);
     if z[0] - bottom > 1.5 * dx {
