@@ -264,16 +264,27 @@ pub struct CavityProbeSpec {
     pub after: f64,
 }
 
-/// A pressure sensor on a wall: the average of the pressure over a segment of length `size` (m) centred at
-/// `position` (m) along the unit `direction` (the wall tangent), sampled at 5 points.
+/// A pressure sensor. By default a face on a wall: `size` wide (m; 0 for a point) centred at `position` (m),
+/// on the wall `wall` names (or the nearest), the whole face on one straight side of it; it reads the wall
+/// pressure averaged over the face, and records its peak and impulse between outputs from every step
+/// (`sph::wall_sensor`; placement rules in `cases::sensor_placement`). `direction` (the wall's tangent) may be
+/// omitted. With `in_fluid = true` it is a probe inside the fluid instead (a symmetry plane, say): the kernel
+/// (Shepard) average of the pressure at 5 points over `size` along `direction`, which it then needs.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PressureProbe {
     pub name: String,
     pub position: Vec<f64>,
-    pub direction: Vec<f64>,
+    #[serde(default)]
+    pub direction: Option<Vec<f64>>,
     #[serde(default)]
     pub size: f64,
+    /// The wall the sensor is on (a `walls` name); default: the nearest.
+    #[serde(default)]
+    pub wall: Option<String>,
+    /// A probe in the fluid, not on a wall.
+    #[serde(default)]
+    pub in_fluid: bool,
 }
 
 /// A wave gauge at abscissa `x` (m): the water level (`eta_NAME`, m), the depth above the gauge's `bottom`
@@ -364,7 +375,7 @@ impl CaseFile {
             c.extend(["front".to_string(), "front_star".to_string()]);
         }
         for p in &self.probes.pressure {
-            c.extend([format!("p_{}", p.name), format!("pstar_{}", p.name)]);
+            c.extend(pressure_columns(p));
         }
         for g in &self.probes.gauge {
             c.extend([
@@ -536,13 +547,14 @@ impl CaseFile {
             }
         }
         for (k, p) in self.probes.pressure.iter().enumerate() {
-            if !vec_ok(&p.position)
-                || !vec_ok(&p.direction)
-                || (p.direction[0].hypot(p.direction[1]) - 1.0).abs() > 1e-6
-            {
+            let direction_ok = match &p.direction {
+                Some(d) => vec_ok(d) && (d[0].hypot(d[1]) - 1.0).abs() <= 1e-6,
+                None => !p.in_fluid,
+            };
+            if !vec_ok(&p.position) || !direction_ok {
                 return Err(err(
                     &format!("probes.pressure[{k}]"),
-                    "a 2-component `position` (m) and a unit `direction`",
+                    "a 2-component `position` (m) and a unit `direction` (which a probe `in_fluid` needs)",
                 ));
             }
             if !(p.size.is_finite() && p.size >= 0.0) {
@@ -578,6 +590,11 @@ impl CaseFile {
                     &format!("probes.pressure[{k}].position"),
                     "a point inside the domain (m), on a wall",
                 ));
+            }
+            if !p.in_fluid {
+                if let Err((field, expected)) = super::sensor_placement::place(self, k, p) {
+                    return Err(err(&field, &expected));
+                }
             }
         }
         let columns = self.probe_columns();
@@ -660,6 +677,21 @@ impl CaseFile {
             _ => unreachable!("checked in parse"),
         }
     }
+}
+
+/// The series columns of a pressure probe: the reading (`p_`, Pa; `pstar_`, over ρgL), and for a wall sensor
+/// the peak since the previous row (`ppeak_`, `pstarpeak_`) and the impulse ∫ p dt over that interval
+/// (`pimpulse_`, Pa s), from every time step.
+pub fn pressure_columns(p: &PressureProbe) -> Vec<String> {
+    let mut c = vec![format!("p_{}", p.name), format!("pstar_{}", p.name)];
+    if !p.in_fluid {
+        c.extend([
+            format!("ppeak_{}", p.name),
+            format!("pstarpeak_{}", p.name),
+            format!("pimpulse_{}", p.name),
+        ]);
+    }
+    c
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@ pub mod case_file;
 pub mod cavity_probe;
 pub mod reference_file;
 pub mod run;
+pub mod sensor_placement;
 pub mod setup;
 
 use crate::input_error::InputError;

@@ -79,8 +79,7 @@ fn columns(case: &CaseFile, nwalls: usize) -> Vec<String> {
         c.push("front_star".into());
     }
     for p in &case.probes.pressure {
-        c.push(format!("p_{}", p.name));
-        c.push(format!("pstar_{}", p.name));
+        c.extend(super::case_file::pressure_columns(p));
     }
     for g in &case.probes.gauge {
         c.push(format!("eta_{}", g.name));
@@ -94,8 +93,8 @@ fn columns(case: &CaseFile, nwalls: usize) -> Vec<String> {
     c
 }
 
-/// Sensor average of the pressure: 5 points over the sensor length along the wall (Pa).
-fn sensor_pressure(sim: &Simulation<2>, pos: &[f64], dir: &[f64], size: f64) -> f64 {
+/// A probe in the fluid: the kernel average of the pressure at 5 points over `size` along `dir` (Pa).
+fn fluid_probe_pressure(sim: &Simulation<2>, pos: &[f64], dir: &[f64], size: f64) -> f64 {
     let (c, d) = (Vector2::new(pos[0], pos[1]), Vector2::new(dir[0], dir[1]));
     let n = if size > 0.0 { 5 } else { 1 };
     let mut s = 0.0;
@@ -135,10 +134,19 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
         row.push(f);
         row.push(f / case.scales.length);
     }
+    // The wall sensors, in the order of the case's probes (setup::wall_sensors).
+    let walls = sim.read_sensors();
+    let (peak, impulse) = sim.take_sensor_record();
+    let mut k = 0;
     for p in &case.probes.pressure {
-        let v = sensor_pressure(sim, &p.position, &p.direction, p.size);
-        row.push(v);
-        row.push(v / s.p_scale);
+        if p.in_fluid {
+            let dir = p.direction.as_deref().unwrap_or(&[0.0, 1.0]);
+            let v = fluid_probe_pressure(sim, &p.position, dir, p.size);
+            row.extend([v, v / s.p_scale]);
+        } else {
+            row.extend([walls[k], walls[k] / s.p_scale, peak[k], peak[k] / s.p_scale, impulse[k]]);
+            k += 1;
+        }
     }
     for g in &case.probes.gauge {
         let bottom = g.bottom.unwrap_or(case.domain.min[1]);

@@ -9,6 +9,7 @@ use crate::sph::{
     particles::{Fluid, MAX_PARTICLES},
     polyline_wall::PolylineWall,
     solver::{Simulation, SolverConfig},
+    wall_sensor::WallSensor,
 };
 use nalgebra::{Matrix2, Vector2};
 
@@ -159,6 +160,22 @@ pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>
         .collect()
 }
 
+/// The case's wall sensors (its pressure probes not `in_fluid`, in order) as faces on their walls, moving
+/// with them.
+pub fn wall_sensors(case: &CaseFile, dx: f64) -> anyhow::Result<Vec<WallSensor<2>>> {
+    let mut out = vec![];
+    for (k, p) in case.probes.pressure.iter().enumerate().filter(|(_, p)| !p.in_fluid) {
+        let pl = super::sensor_placement::place(case, k, p)
+            .map_err(|(field, expected)| anyhow::anyhow!("case `{}`: {field}: expected {expected}", case.name))?;
+        let velocity = case.walls[pl.wall]
+            .velocity
+            .as_ref()
+            .map_or(Vector2::zeros(), |v| v2(v));
+        out.push(WallSensor::face(pl.centre, pl.tangent, p.size, pl.inward, velocity, dx));
+    }
+    Ok(out)
+}
+
 /// About how many fluid particles and wall ghosts a case holds at spacing `dx` (kernel support `support`):
 /// the blocks' lattice counts and, per wall segment, its length in spacings (plus the ends) times the ghost
 /// layers. An estimate made before anything is allocated.
@@ -230,5 +247,7 @@ pub fn build(case: &CaseFile, res: Option<f64>) -> anyhow::Result<Simulation<2>>
     check_size(case, dx, support)?;
     let fl = fluid(case, dx, &cfg.eos, &cfg.body_force);
     let w = walls(case, dx, support);
-    Ok(Simulation::new(cfg, fl, w))
+    let mut sim = Simulation::new(cfg, fl, w);
+    sim.set_sensors(wall_sensors(case, dx)?);
+    Ok(sim)
 }

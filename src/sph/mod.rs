@@ -18,5 +18,6 @@ pub mod packing;
 pub mod particles;
 pub mod polyline_wall;
 pub mod solver;
+pub mod wall_sensor;
 
 pub use equations::{density_diffusion, viscosity};

@@ -28,6 +28,7 @@ use super::kernel_table::{GradientFactor, GradientTable};
 use super::mls::{mls_fit, MlsFit};
 use super::neighbours::CellList;
 use super::particles::Fluid;
+use super::wall_sensor::{SensorRecord, WallSensor};
 use nalgebra::SVector;
 use rayon::prelude::*;
 use std::time::Instant;
@@ -265,6 +266,10 @@ pub struct Simulation<const D: usize> {
     ghosts_static: bool,
     /// The tabulated gradient factor when `cfg.kernel_table` is set (and the kernel is tabulated).
     grad_table: Option<GradientTable>,
+    /// Wall pressure sensors read at the start of every step ([`super::wall_sensor`]).
+    pub(super) sensors: Vec<WallSensor<D>>,
+    /// Their peaks and impulses since the last take.
+    pub(super) sensor_record: SensorRecord,
 }
 
 impl<const D: usize> Simulation<D> {
@@ -293,6 +298,8 @@ impl<const D: usize> Simulation<D> {
             neighbours: vec![],
             ghosts_static: false,
             grad_table,
+            sensors: vec![],
+            sensor_record: SensorRecord::default(),
         };
         sim.place_ghosts(0.0);
         sim.ghosts_static = !sim.boundaries.iter().any(|b| b.moves());
@@ -596,6 +603,10 @@ impl<const D: usize> Simulation<D> {
         let vel0 = self.fluid.vel.clone();
         let rho0 = self.fluid.rho.clone();
         let k1 = self.rates(t0, &pos0, &vel0, &rho0);
+        if !self.sensors.is_empty() {
+            // The first stage has prepared the state at t0: the sensors read it at no extra search.
+            self.read_sensors();
+        }
         let dt = timestep::time_step(self.cfg.cfl, self.kernel.h, k1.max_signal, k1.max_accel);
         if !dt.is_finite() || dt < self.cfg.dt_floor {
             return Err(self.blow_up(
@@ -775,6 +786,12 @@ impl<const D: usize> Simulation<D> {
     /// impact" fell on that spike). Under water the reading is the Shepard average unchanged. Call after
     /// [`Simulation::refresh`].
     pub fn sensor_pressure_at(&self, x: &SVector<f64, D>) -> f64 {
+        self.pressure_at(x).unwrap_or(0.0) * (self.wet_fraction(x) / SENSOR_WET_FRACTION).min(1.0)
+    }
+
+    /// f = Σ_fluid W V / (1 − Σ_ghosts W V_lattice) at `x`: the part of the fluid side of the support that water
+    /// fills (see [`Simulation::sensor_pressure_at`]).
+    pub fn wet_fraction(&self, x: &SVector<f64, D>) -> f64 {
         let nf = self.fluid.len();
         let (mut fluid, mut solid) = (0.0, 0.0);
         self.cells
@@ -785,8 +802,21 @@ impl<const D: usize> Simulation<D> {
                     solid += self.kernel.w(r) * self.ghosts.geom.volume[j - nf];
                 }
             });
-        let filled = fluid / (1.0 - solid).max(1e-3);
-        self.pressure_at(x).unwrap_or(0.0) * (filled / SENSOR_WET_FRACTION).min(1.0)
+        fluid / (1.0 - solid).max(1e-3)
+    }
+
+    /// Calls `f(j, x − x_j, |x − x_j|, V_j)` for every fluid particle j within the kernel support of `x`, in the
+    /// cell list's order, at the prepared state.
+    pub(super) fn for_each_fluid_within(
+        &self,
+        x: &SVector<f64, D>,
+        mut f: impl FnMut(usize, SVector<f64, D>, f64, f64),
+    ) {
+        let nf = self.fluid.len();
+        self.cells
+            .for_each_below_within(&self.all_pos, x, self.kernel.support, nf, |j, rij, r| {
+                f(j, rij, r, self.fluid.mass[j] / self.fluid.rho[j])
+            });
     }
 
     /// Shepard average of the pressure at `x` over fluid and ghost particles (Pa); `None` if no particle
