@@ -218,7 +218,7 @@ fn face_sensor_no_water_touches_reads_air() {
         V2::new(1.0, 0.0),
         2.0 * dx,
         V2::new(0.0, 1.0),
-        V2::zeros(),
+        None,
         dx,
     );
     sim.set_sensors(vec![face]);

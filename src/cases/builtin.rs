@@ -10,6 +10,8 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("jet-wall", include_str!("../../cases/jet-wall.toml")),
     ("jet-plate", include_str!("../../cases/jet-plate.toml")),
     ("jet-floor", include_str!("../../cases/jet-floor.toml")),
+    ("sloshing-deep", include_str!("../../cases/sloshing-deep.toml")),
+    ("sloshing-shallow", include_str!("../../cases/sloshing-shallow.toml")),
 ];
 
 /// The TOML text of a built-in case.

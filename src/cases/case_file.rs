@@ -199,6 +199,9 @@ pub struct WallSpec {
     /// (mirror images of the fluid particles, Colagrossi & Landrini 2003; corners keep fixed ghosts).
     #[serde(default)]
     pub ghosts: crate::sph::polyline_wall::GhostKind,
+    /// Prescribed sway, heave and roll (`cases::wall_motion`); omitted: still (or `velocity`).
+    #[serde(default)]
+    pub motion: Option<super::wall_motion::MotionSpec>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -301,6 +304,10 @@ pub struct Gauge {
     pub bottom: Option<f64>,
     #[serde(default)]
     pub connected: bool,
+    /// The wall whose motion carries the gauge (a gauge in a moving tank): `x` is its abscissa at t = 0 and it
+    /// follows the wall's horizontal displacement (a roll does not tilt it).
+    #[serde(default)]
+    pub moves_with: Option<String>,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -356,6 +363,11 @@ impl CaseFile {
             if let Some(c) = &mut self.probes.cavity {
                 c.after *= f;
             }
+            for m in self.walls.iter_mut().filter_map(|w| w.motion.as_mut()) {
+                for s in [&mut m.sway, &mut m.heave, &mut m.roll].into_iter().flatten() {
+                    s.period *= f;
+                }
+            }
             self.output.time_unit = TimeUnit::Seconds;
         }
     }
@@ -365,6 +377,7 @@ impl CaseFile {
         let mut case = Self::parse(&read_text(path)?, &path.display().to_string())?;
         case.dir = path.parent().map(|p| p.to_path_buf());
         super::reference_file::check_files(&case, &path.display().to_string())?;
+        super::wall_motion::check_tables(&case, &path.display().to_string())?;
         Ok(case)
     }
 
@@ -489,6 +502,9 @@ impl CaseFile {
                     return Err(err(&format!("walls[{k}].velocity"), "a 2-component velocity in m/s"));
                 }
             }
+            if let Err((field, expected)) = super::wall_motion::check(k, w) {
+                return Err(err(&field, &expected));
+            }
         }
         if self.blocks.is_empty() {
             return Err(err("blocks", "at least one fluid block"));
@@ -573,6 +589,15 @@ impl CaseFile {
                         self.domain.min[0], self.domain.max[0]
                     ),
                 ));
+            }
+            if let Some(w) = &g.moves_with {
+                if !self.walls.iter().any(|x| &x.name == w) {
+                    let names: Vec<&str> = self.walls.iter().map(|w| w.name.as_str()).collect();
+                    return Err(err(
+                        &format!("probes.gauge[{k}].moves_with"),
+                        &format!("the name of one of the case's walls ({})", names.join(", ")),
+                    ));
+                }
             }
             let (lo, hi) = (self.domain.min[d - 1], self.domain.max[d - 1]);
             if let Some(b) = g.bottom {

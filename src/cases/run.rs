@@ -106,6 +106,8 @@ fn fluid_probe_pressure(sim: &Simulation<2>, pos: &[f64], dir: &[f64], size: f64
 }
 
 struct Sampler {
+    /// The motion carrying each gauge (`moves_with`), in the case's order.
+    gauge_motion: Vec<Option<crate::sph::rigid_pose::MotionLaw>>,
     t_scale: f64,
     p_scale: f64,
     e0: f64,
@@ -148,9 +150,10 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
             k += 1;
         }
     }
-    for g in &case.probes.gauge {
+    for (g, motion) in case.probes.gauge.iter().zip(&s.gauge_motion) {
         let bottom = g.bottom.unwrap_or(case.domain.min[1]);
-        let eta = diagnostics::water_level(&sim.fluid, g.x, sim.cfg.dx, bottom, g.connected);
+        let x = g.x + motion.as_ref().map_or(0.0, |m| m.pose(sim.time).d.x);
+        let eta = diagnostics::water_level(&sim.fluid, x, sim.cfg.dx, bottom, g.connected);
         row.push(eta);
         row.push(eta - bottom);
         row.push((eta - bottom) / case.scales.length);
@@ -299,7 +302,27 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     let mass = sim.fluid.total_mass();
     let has_gravity = matches!(case.body_force, super::case_file::BodyForceSpec::Gravity { .. });
     let t_scale = (l / g).sqrt();
+    let mut gauge_motion = vec![];
+    for g in &case.probes.gauge {
+        let wall = g
+            .moves_with
+            .as_ref()
+            .and_then(|name| case.walls.iter().find(|w| &w.name == name));
+        gauge_motion.push(match wall {
+            Some(w) => match (&w.velocity, super::wall_motion::law(case, w)?) {
+                (Some(v), _) => {
+                    let v = nalgebra::Vector2::new(v[0], v[1]);
+                    Some(crate::sph::rigid_pose::MotionLaw::new(move |t| {
+                        crate::sph::rigid_pose::Pose2::translation(v * t, v, nalgebra::Vector2::zeros())
+                    }))
+                }
+                (None, law) => law,
+            },
+            None => None,
+        });
+    }
     let sampler = Sampler {
+        gauge_motion,
         t_scale,
         p_scale: case.fluid.rho0 * g * l,
         e0: e_init.mechanical(),
@@ -313,7 +336,8 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     let vtk_dir = opts.out_dir.as_ref().map(|d| d.join("vtk"));
     let want_vtk = opts.vtk && case.output.vtk_every > 0.0 && vtk_dir.is_some();
     // Walls that move do work on the fluid, so energy may rise; every body force here is conservative.
-    let check_energy = !opts.allow_energy_growth && case.walls.iter().all(|w| w.velocity.is_none());
+    let check_energy =
+        !opts.allow_energy_growth && case.walls.iter().all(|w| w.velocity.is_none() && w.motion.is_none());
     let mut sampling = Sampling {
         case,
         sampler,

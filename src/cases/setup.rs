@@ -9,9 +9,10 @@ use crate::sph::{
     particles::{Fluid, MAX_PARTICLES},
     polyline_wall::PolylineWall,
     solver::{Simulation, SolverConfig},
-    wall_sensor::WallSensor,
+    wall_sensor::{SensorFrame, WallSensor},
 };
 use nalgebra::{Matrix2, Vector2};
+use std::sync::Arc;
 
 type V2 = Vector2<f64>;
 
@@ -137,27 +138,28 @@ fn velocity_at(velocity: &Option<Vec<f64>>, gradient: &Option<Vec<Vec<f64>>>, x:
 }
 
 /// The walls of a case as ghost-particle boundaries.
-pub fn walls(case: &CaseFile, dx: f64, support: f64) -> Vec<Box<dyn Boundary<2>>> {
-    case.walls
-        .iter()
-        .map(|w| {
-            let motion = match &w.velocity {
-                Some(v) => RigidMotion::ConstantVelocity(v2(v)),
-                None => RigidMotion::Fixed,
-            };
-            Box::new(
-                PolylineWall::new(
-                    &w.name,
-                    w.points.iter().map(|p| v2(p)).collect(),
-                    w.fluid_side,
-                    motion,
-                    dx,
-                    support,
-                )
-                .with_ghosts(w.ghosts),
-            ) as Box<dyn Boundary<2>>
-        })
-        .collect()
+pub fn walls(case: &CaseFile, dx: f64, support: f64) -> anyhow::Result<Vec<Box<dyn Boundary<2>>>> {
+    let mut out = vec![];
+    for w in &case.walls {
+        let motion = match &w.velocity {
+            Some(v) => RigidMotion::ConstantVelocity(v2(v)),
+            None => RigidMotion::Fixed,
+        };
+        let mut wall = PolylineWall::new(
+            &w.name,
+            w.points.iter().map(|p| v2(p)).collect(),
+            w.fluid_side,
+            motion,
+            dx,
+            support,
+        )
+        .with_ghosts(w.ghosts);
+        if let Some(law) = super::wall_motion::law(case, w)? {
+            wall = wall.with_motion_law(law);
+        }
+        out.push(Box::new(wall) as Box<dyn Boundary<2>>);
+    }
+    Ok(out)
 }
 
 /// The case's wall sensors (its pressure probes not `in_fluid`, in order) as faces on their walls, moving
@@ -167,11 +169,16 @@ pub fn wall_sensors(case: &CaseFile, dx: f64) -> anyhow::Result<Vec<WallSensor<2
     for (k, p) in case.probes.pressure.iter().enumerate().filter(|(_, p)| !p.in_fluid) {
         let pl = super::sensor_placement::place(case, k, p)
             .map_err(|(field, expected)| anyhow::anyhow!("case `{}`: {field}: expected {expected}", case.name))?;
-        let velocity = case.walls[pl.wall]
-            .velocity
-            .as_ref()
-            .map_or(Vector2::zeros(), |v| v2(v));
-        out.push(WallSensor::face(pl.centre, pl.tangent, p.size, pl.inward, velocity, dx));
+        let wall = &case.walls[pl.wall];
+        let frame = match (super::wall_motion::law(case, wall)?, &wall.velocity) {
+            (Some(law), _) => Some(SensorFrame(Arc::new(move |t| law.pose(t).affine()))),
+            (None, Some(v)) => {
+                let v = v2(v);
+                Some(SensorFrame(Arc::new(move |t| (Matrix2::identity(), v * t))))
+            }
+            (None, None) => None,
+        };
+        out.push(WallSensor::face(pl.centre, pl.tangent, p.size, pl.inward, frame, dx));
     }
     Ok(out)
 }
@@ -246,7 +253,7 @@ pub fn build(case: &CaseFile, res: Option<f64>) -> anyhow::Result<Simulation<2>>
     let support = cfg.kernel.support_over_h() * cfg.h;
     check_size(case, dx, support)?;
     let fl = fluid(case, dx, &cfg.eos, &cfg.body_force);
-    let w = walls(case, dx, support);
+    let w = walls(case, dx, support)?;
     let mut sim = Simulation::new(cfg, fl, w);
     sim.set_sensors(wall_sensors(case, dx)?);
     Ok(sim)

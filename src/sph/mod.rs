@@ -17,6 +17,7 @@ pub mod neighbours;
 pub mod packing;
 pub mod particles;
 pub mod polyline_wall;
+pub mod rigid_pose;
 pub mod solver;
 pub mod wall_sensor;
 

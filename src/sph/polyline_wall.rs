@@ -11,6 +11,7 @@
 //! Fluid angles above π (Figs. 7.4–7.5: bisector ghosts, narrow angles) are not treated specially yet.
 
 use super::boundary::{Boundary, GhostGeometry, Mirror, RigidMotion};
+use super::rigid_pose::{MotionLaw, Pose2};
 use nalgebra::Vector2;
 
 type V2 = Vector2<f64>;
@@ -53,6 +54,8 @@ pub struct PolylineWall {
     kind: GhostKind,
     /// Fixed ghost geometry at t = 0 (with [`GhostKind::Images`], the corner ghosts only).
     base: GhostGeometry<2>,
+    /// A prescribed rigid motion (sway, heave, roll) replacing `motion` when set.
+    law: Option<MotionLaw>,
 }
 
 /// Turn angle above which a vertex splits the offset profile into separately sampled chains (radians).
@@ -77,6 +80,7 @@ impl PolylineWall {
             support,
             kind: GhostKind::Fixed,
             base: GhostGeometry::default(),
+            law: None,
         };
         wall.base = ghost_layers(&wall.points, fluid_side, ds, support);
         wall
@@ -90,6 +94,24 @@ impl PolylineWall {
             self.base = self.base.filtered(|k| self.base.mirror[k] == Mirror::Point);
         }
         self
+    }
+
+    /// The same wall moving rigidly with the pose `law` gives at each time (instead of `motion`).
+    pub fn with_motion_law(mut self, law: MotionLaw) -> Self {
+        self.law = Some(law);
+        self
+    }
+
+    /// The wall's pose at time t.
+    pub fn pose(&self, t: f64) -> Pose2 {
+        match &self.law {
+            Some(law) => law.pose(t),
+            None => Pose2::translation(
+                self.motion.displacement(t),
+                self.motion.velocity(t),
+                self.motion.acceleration(t),
+            ),
+        }
     }
 
     /// How the straight sides make their ghosts.
@@ -113,16 +135,20 @@ impl Boundary<2> for PolylineWall {
         &self.name
     }
     fn moves(&self) -> bool {
-        self.motion != RigidMotion::Fixed
+        self.motion != RigidMotion::Fixed || self.law.is_some()
     }
+    /// The ghosts at t = 0 carried by the pose; each takes the velocity and acceleration of the wall point
+    /// between it and its mirror point (on the wall for a side's ghost, the vertex for a corner's).
     fn ghosts(&self, t: f64, out: &mut GhostGeometry<2>) {
-        let d = self.motion.displacement(t);
-        let v = self.motion.velocity(t);
-        let a = self.motion.acceleration(t);
-        out.pos.extend(self.base.pos.iter().map(|p| p + d));
-        out.interp.extend(self.base.interp.iter().map(|p| p + d));
-        out.wall_vel.extend(self.base.pos.iter().map(|_| v));
-        out.wall_acc.extend(self.base.pos.iter().map(|_| a));
+        let pose = self.pose(t);
+        for (g, i) in self.base.pos.iter().zip(&self.base.interp) {
+            let (g, i) = (pose.point(g), pose.point(i));
+            let w = (g + i) * 0.5;
+            out.pos.push(g);
+            out.interp.push(i);
+            out.wall_vel.push(pose.velocity_at(&w));
+            out.wall_acc.push(pose.acceleration_at(&w));
+        }
         out.volume.extend_from_slice(&self.base.volume);
         out.mirror.extend_from_slice(&self.base.mirror);
     }
@@ -131,25 +157,25 @@ impl Boundary<2> for PolylineWall {
         if self.kind != GhostKind::Images {
             return;
         }
-        let d = self.motion.displacement(t);
-        let v = self.motion.velocity(t);
-        let a = self.motion.acceleration(t);
+        let pose = self.pose(t);
         let normals = solid_normals(&self.points, self.fluid_side);
-        for (w, n) in self.points.windows(2).zip(&normals) {
-            let (p0, p1) = (w[0] + d, w[1] + d);
+        for (w, n0) in self.points.windows(2).zip(&normals) {
+            let (p0, p1) = (pose.point(&w[0]), pose.point(&w[1]));
+            let n = pose.vector(n0);
             let along = p1 - p0;
             let l2 = along.norm_squared();
             for (j, x) in pos.iter().enumerate() {
                 let r = x - p0;
                 let s = r.dot(&along) / l2;
-                let depth = -r.dot(n); // distance from the wall on the fluid side
+                let depth = -r.dot(&n); // distance from the wall on the fluid side
                 if !(0.0..=1.0).contains(&s) || depth <= 0.0 || depth >= self.support {
                     continue;
                 }
+                let foot = x + n * depth;
                 out.pos.push(x + n * (2.0 * depth));
                 out.interp.push(*x);
-                out.wall_vel.push(v);
-                out.wall_acc.push(a);
+                out.wall_vel.push(pose.velocity_at(&foot));
+                out.wall_acc.push(pose.acceleration_at(&foot));
                 out.volume.push(0.0); // the solver gives an image its particle's volume m/ρ
                 out.mirror.push(Mirror::Plane);
                 source.push(j);
@@ -158,14 +184,15 @@ impl Boundary<2> for PolylineWall {
     }
 
     fn keep_out(&self, t: f64, x: &mut V2, u: &mut V2) -> bool {
-        let d = self.motion.displacement(t);
-        let local = *x - d;
+        let pose = self.pose(t);
+        let local = pose.local(x);
         let Some((foot, n)) = solid_side(&self.points, self.fluid_side, &local, self.support) else {
             return false;
         };
         let depth = (local - foot).dot(&n);
-        *x = foot + d - n * (0.5 * self.ds).min(depth.max(0.0) + 0.25 * self.ds);
-        let rel = (*u - self.motion.velocity(t)).dot(&n);
+        *x = pose.point(&(foot - n * (0.5 * self.ds).min(depth.max(0.0) + 0.25 * self.ds)));
+        let n = pose.vector(&n);
+        let rel = (*u - pose.velocity_at(x)).dot(&n);
         if rel > 0.0 {
             *u -= n * rel;
         }

@@ -19,7 +19,8 @@
 
 use super::mls::mls_fit;
 use super::solver::{Simulation, SENSOR_WET_FRACTION};
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
+use std::sync::Arc;
 
 /// Sample points per particle spacing along a sensor face: 4, so that the midpoint rule's error on the
 /// smooth MLS field stays far below the field's own (a face of 0.5 dx gets 2 points, one of 20 dx 80).
@@ -32,30 +33,40 @@ pub struct WallSensor<const D: usize> {
     pub points: Vec<SVector<f64, D>>,
     /// Unit normal of the wall pointing into the fluid.
     pub inward: SVector<f64, D>,
-    /// Velocity of the wall (m/s), constant: the points are at `points + velocity t` at time t.
-    pub velocity: SVector<f64, D>,
+    /// How the wall carries the sensor: at time t a point p is at R p + b and the normal is R n, with
+    /// (R, b) = `frame(t)`; `None` for a still wall.
+    pub frame: Option<SensorFrame<D>>,
+}
+
+/// The rigid map (R, b) of a moving wall at time t: a point p of it is at R p + b.
+pub type RigidMap<const D: usize> = dyn Fn(f64) -> (SMatrix<f64, D, D>, SVector<f64, D>) + Send + Sync;
+
+/// The rigid map of a moving wall at each time (see [`WallSensor::frame`]).
+#[derive(Clone)]
+pub struct SensorFrame<const D: usize>(pub Arc<RigidMap<D>>);
+
+impl<const D: usize> std::fmt::Debug for SensorFrame<D> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "SensorFrame")
+    }
 }
 
 impl<const D: usize> WallSensor<D> {
     /// The face centred at `centre` along the unit `tangent`, `size` wide (m; 0 for a point sensor), on a
-    /// wall of inward normal `inward`, for particle spacing `dx` (m).
+    /// wall of inward normal `inward`, for particle spacing `dx` (m); the wall carries it by `frame`.
     pub fn face(
         centre: SVector<f64, D>,
         tangent: SVector<f64, D>,
         size: f64,
         inward: SVector<f64, D>,
-        velocity: SVector<f64, D>,
+        frame: Option<SensorFrame<D>>,
         dx: f64,
     ) -> Self {
         let n = ((size / dx * SAMPLES_PER_SPACING).ceil() as usize).max(1);
         let points = (0..n)
             .map(|k| centre + tangent * (size * ((k as f64 + 0.5) / n as f64 - 0.5)))
             .collect();
-        WallSensor {
-            points,
-            inward,
-            velocity,
-        }
+        WallSensor { points, inward, frame }
     }
 }
 
@@ -124,13 +135,17 @@ impl<const D: usize> Simulation<D> {
 
     /// The reading of `sensor` (Pa): the mean of its points' wall pressures times their wetness (module doc).
     pub fn sensor_reading(&self, sensor: &WallSensor<D>) -> f64 {
-        let shift = sensor.velocity * self.time;
+        let (r, b) = match &sensor.frame {
+            Some(f) => (f.0)(self.time),
+            None => (SMatrix::identity(), SVector::zeros()),
+        };
+        let inward = r * sensor.inward;
         let sum: f64 = sensor
             .points
             .iter()
             .map(|p| {
-                let x = p + shift;
-                self.wall_pressure(&x, &sensor.inward) * (self.wet_fraction(&x) / SENSOR_WET_FRACTION).min(1.0)
+                let x = r * p + b;
+                self.wall_pressure(&x, &inward) * (self.wet_fraction(&x) / SENSOR_WET_FRACTION).min(1.0)
             })
             .sum();
         sum / sensor.points.len() as f64
@@ -171,7 +186,7 @@ mod tests {
             SVector::from([0.0, 1.0]),
             0.1,
             SVector::from([-1.0, 0.0]),
-            SVector::zeros(),
+            None,
             0.01,
         );
         assert_eq!(s.points.len(), 40);
@@ -183,7 +198,7 @@ mod tests {
             SVector::from([0.0, 1.0]),
             0.0,
             SVector::from([-1.0, 0.0]),
-            SVector::zeros(),
+            None,
             0.01,
         );
         assert_eq!(point.points, vec![SVector::from([1.0, 0.5])]);

@@ -17,6 +17,7 @@ mod jets;
 mod martin_moyce;
 mod plots;
 pub mod references;
+pub mod sloshing;
 pub mod tank_3d;
 
 pub use dam_break::{
@@ -83,6 +84,8 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "dam-break-mm" => Some(50.0),
         "dam-break" => Some(80.0),
         "jet-wall" | "jet-plate" | "jet-floor" => Some(20.0),
+        "sloshing-deep" => Some(50.0),
+        "sloshing-shallow" => Some(30.0),
         TANK_3D => Some(tank_3d::FULL_RESOLUTION),
         _ => None,
     }
@@ -140,6 +143,7 @@ fn builtin_checks(r: &RunResult) -> Option<Vec<Check>> {
         "jet-wall" => jet_wall(r),
         "jet-plate" => jet_plate(r),
         "jet-floor" => jet_floor(r),
+        "sloshing-deep" | "sloshing-shallow" => sloshing::sloshing(r),
         _ => return None,
     })
 }
