@@ -229,5 +229,94 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
         }
         _ => {}
     }
+    files.extend(sloshing_plots(r, dir)?);
+    files.extend(sensor_plot(r, dir)?);
+    Ok(files)
+}
+
+/// Every wall sensor's reading p/(ρ g length) at the outputs, and its peaks between them where they rise above
+/// the readings, on one figure (`NAME_sensors.png`), for any case with wall sensors.
+fn sensor_plot(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf>> {
+    let walls: Vec<_> = r.case.probes.pressure.iter().filter(|p| !p.in_fluid).collect();
+    if walls.is_empty() {
+        return Ok(vec![]);
+    }
+    let ts = col(r, "t_star");
+    let mut series = vec![];
+    for p in walls {
+        let v = col(r, &format!("pstar_{}", p.name));
+        let peak = col(r, &format!("pstarpeak_{}", p.name));
+        // The peaks between outputs where they rise above both readings around them by 1 % of ρgL or more.
+        let above: Vec<(f64, f64)> = (1..ts.len())
+            .filter(|&k| peak[k] > v[k].max(v[k - 1]) + 0.01)
+            .map(|k| (ts[k], peak[k]))
+            .collect();
+        series.push(Series {
+            name: p.name.clone(),
+            points: ts.iter().copied().zip(v).collect(),
+            style: Style::Line,
+        });
+        if !above.is_empty() {
+            series.push(Series {
+                name: format!("{}: peak between outputs", p.name),
+                points: above,
+                style: Style::Markers,
+            });
+        }
+    }
+    let p = dir.join(format!("{}_sensors.png", r.case.name));
+    line_plot(
+        &p,
+        &format!("{}: wall sensors", r.case.name),
+        "t sqrt(g/L)",
+        "p / (rho g L)",
+        &series,
+    )?;
+    Ok(vec![p])
+}
+
+/// A tank in sway from rest with gauges that move with it (whatever its name): the elevation at each gauge
+/// against linear potential theory (`validation::sloshing`), one figure per gauge.
+fn sloshing_plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf>> {
+    let Some((x0, l, h, sway)) = super::sloshing::tank(r) else {
+        return Ok(vec![]);
+    };
+    let g = r.case.gravity_magnitude();
+    let t = col(r, "t");
+    let mut files = vec![];
+    for gauge in r.case.probes.gauge.iter().filter(|g| g.moves_with.is_some()) {
+        let level = col(r, &format!("eta_{}", gauge.name));
+        let s = gauge.x - x0;
+        let ours: Vec<(f64, f64)> = t.iter().zip(&level).map(|(&t, &e)| (t, e - level[0])).collect();
+        let theory: Vec<(f64, f64)> = t
+            .iter()
+            .map(|&t| (t, super::sloshing::linear_elevation(l, h, g, &sway, s, t)))
+            .collect();
+        let p = dir.join(format!("{}_elevation_{}.png", r.case.name, gauge.name));
+        line_plot(
+            &p,
+            &format!(
+                "{}: elevation at gauge {} (s/L = {:.3})",
+                r.case.name,
+                gauge.name,
+                s / l
+            ),
+            "t (s)",
+            "elevation (m)",
+            &[
+                Series {
+                    name: format!("bowwave, h/dx = {:.0}", h / r.dx),
+                    points: ours,
+                    style: Style::Line,
+                },
+                Series {
+                    name: "linear theory".into(),
+                    points: theory,
+                    style: Style::Line,
+                },
+            ],
+        )?;
+        files.push(p);
+    }
     Ok(files)
 }
