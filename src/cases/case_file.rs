@@ -299,7 +299,8 @@ pub struct PressureProbe {
 pub struct Gauge {
     pub name: String,
     pub x: f64,
-    /// Height of the floor under the gauge (m); default: the bottom of the domain.
+    /// Height of the floor under the gauge (m); default: the lowest point where a wall crosses the vertical
+    /// through `x` ([`CaseFile::floor_under`]), or the domain's bottom if none does.
     #[serde(default)]
     pub bottom: Option<f64>,
     #[serde(default)]
@@ -379,6 +380,32 @@ impl CaseFile {
         super::reference_file::check_files(&case, &path.display().to_string())?;
         super::wall_motion::check_tables(&case, &path.display().to_string())?;
         Ok(case)
+    }
+
+    /// The lowest height at which one of the case's walls (as drawn, at t = 0) crosses the vertical through
+    /// `x`, or the domain's bottom if none does: a gauge's default floor.
+    pub fn floor_under(&self, x: f64) -> f64 {
+        let mut floor = f64::INFINITY;
+        for w in &self.walls {
+            for seg in w.points.windows(2) {
+                let (a, b) = (&seg[0], &seg[1]);
+                let (lo, hi) = (a[0].min(b[0]), a[0].max(b[0]));
+                if x < lo || x > hi {
+                    continue;
+                }
+                let y = if hi > lo {
+                    a[1] + (b[1] - a[1]) * (x - a[0]) / (b[0] - a[0])
+                } else {
+                    a[1].min(b[1]) // a vertical side through x: its foot
+                };
+                floor = floor.min(y);
+            }
+        }
+        if floor.is_finite() {
+            floor
+        } else {
+            self.domain.min[self.dimension.max(2) - 1]
+        }
     }
 
     /// The series columns a probe, gauge or the front writes (those a reference may name).

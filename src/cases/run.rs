@@ -151,8 +151,11 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
         }
     }
     for (g, motion) in case.probes.gauge.iter().zip(&s.gauge_motion) {
-        let bottom = g.bottom.unwrap_or(case.domain.min[1]);
-        let x = g.x + motion.as_ref().map_or(0.0, |m| m.pose(sim.time).d.x);
+        let shift = motion
+            .as_ref()
+            .map_or(nalgebra::Vector2::zeros(), |m| m.pose(sim.time).d);
+        let bottom = g.bottom.unwrap_or_else(|| case.floor_under(g.x)) + shift.y;
+        let x = g.x + shift.x;
         let eta = diagnostics::water_level(&sim.fluid, x, sim.cfg.dx, bottom, g.connected);
         row.push(eta);
         row.push(eta - bottom);

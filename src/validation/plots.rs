@@ -231,7 +231,46 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
     }
     files.extend(sloshing_plots(r, dir)?);
     files.extend(sensor_plot(r, dir)?);
+    files.extend(gauge_plot(r, dir)?);
     Ok(files)
+}
+
+/// Every gauge's depth over the case's length scale at the outputs, on one figure (`NAME_gauges.png`), for any
+/// case with gauges.
+fn gauge_plot(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf>> {
+    if r.case.probes.gauge.is_empty() {
+        return Ok(vec![]);
+    }
+    let ts = col(r, "t_star");
+    let series: Vec<Series> = r
+        .case
+        .probes
+        .gauge
+        .iter()
+        .map(|g| Series {
+            name: format!(
+                "{} (x = {} m{})",
+                g.name,
+                g.x,
+                if g.connected { ", connected water only" } else { "" }
+            ),
+            points: ts
+                .iter()
+                .copied()
+                .zip(col(r, &format!("depthstar_{}", g.name)))
+                .collect(),
+            style: Style::Line,
+        })
+        .collect();
+    let p = dir.join(format!("{}_gauges.png", r.case.name));
+    line_plot(
+        &p,
+        &format!("{}: wave gauges", r.case.name),
+        "t sqrt(g/L)",
+        "depth / L",
+        &series,
+    )?;
+    Ok(vec![p])
 }
 
 /// Every wall sensor's reading p/(ρ g length) at the outputs, and its peaks between them where they rise above
