@@ -313,8 +313,8 @@ fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
 }
 
 /// Issue #36: a user's experiment as a case file with its own references (`cases/examples/dam-break-buchner.toml`,
-/// Buchner's P1 and P2) runs and is compared end to end: one mean-error and one peak row per reference, with
-/// finite numbers, the P2 comparison under the case's declared tolerance (0.1 ρgH; measured 0.052 at H/dx 20),
+/// Buchner's P1 and P2) runs and is compared end to end: a mean-error, a peak, an impulse and a first-crossing
+/// row per reference, with finite numbers, the P2 comparison under the case's declared tolerance (0.1 ρgH; measured 0.052 at H/dx 20),
 /// and a plot per reference. Not a built-in's name, so no built-in check applies.
 #[test]
 fn a_case_file_with_references_is_compared_end_to_end() {
@@ -331,7 +331,7 @@ fn a_case_file_with_references_is_compared_end_to_end() {
     )
     .unwrap();
     let checks = validation::checks(&r).expect("the references give checks");
-    assert_eq!(checks.len(), 4, "{checks:?}");
+    assert_eq!(checks.len(), 8, "{checks:?}");
     assert!(checks.iter().all(|c| c.error.is_finite()), "{checks:?}");
     let p2 = checks
         .iter()

@@ -1,6 +1,6 @@
 //! A case's own references (`[[references]]` in a case file): a measured series beside one of the case's
-//! series columns, compared over a window (the mean |ours − reference| with the case's tolerance, and the
-//! peaks), and plotted. What a user's experiment gets without a built-in's name.
+//! series columns, compared over a window (the mean |ours − reference| with the case's tolerance; reported: the
+//! peaks, the impulses ∫ y dt and the first crossings of half the reference's peak), and plotted. What a user's experiment gets without a built-in's name.
 
 use super::{check, Check};
 use crate::cases::case_file::ReferenceSpec;
@@ -66,23 +66,92 @@ pub fn reference_checks(r: &RunResult) -> Vec<Check> {
             mean_err,
             spec.tolerance,
         ));
-        let peak_ours = ts
-            .iter()
-            .zip(&ys)
-            .filter(|(t, _)| **t >= a && **t <= b)
-            .map(|(_, y)| *y)
-            .fold(f64::NEG_INFINITY, f64::max);
-        let peak_ref = inside.iter().map(|p| p.2).fold(f64::NEG_INFINITY, f64::max);
+        // A wall sensor's peak is held between outputs from every step (`ppeak_`, `pstarpeak_`).
+        let peaks = peak_column(&spec.column)
+            .and_then(|c| r.series.column(&c))
+            .unwrap_or_else(|| ys.clone());
+        let window: Vec<usize> = (0..ts.len()).filter(|&k| ts[k] >= a && ts[k] <= b).collect();
+        let peak_ours = window.iter().map(|&k| peaks[k]).fold(f64::NEG_INFINITY, f64::max);
+        let in_ref: Vec<(f64, f64)> = pts.iter().copied().filter(|p| p.0 >= a && p.0 <= b).collect();
+        let peak_ref = in_ref.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
         out.push(check(
             r,
-            &format!("{label}: peak over {a}..{b} (ours at every sample, ref at its points)"),
+            &format!("{label}: peak over {a}..{b} (ours from every step or sample, ref at its points)"),
             peak_ours,
             peak_ref,
             (peak_ours - peak_ref).abs(),
             None,
         ));
+        let ours: Vec<(f64, f64)> = window.iter().map(|&k| (ts[k], ys[k])).collect();
+        let (imp_ours, imp_ref) = (trapezoid(&ours), trapezoid(&in_ref));
+        out.push(check(
+            r,
+            &format!(
+                "{label}: impulse (integral over {a}..{b}, trapezoidal, in {})",
+                spec.time
+            ),
+            imp_ours,
+            imp_ref,
+            (imp_ours - imp_ref).abs(),
+            None,
+        ));
+        let level = 0.5 * peak_ref;
+        let (cross_ours, cross_ref) = (first_crossing(&ours, level), first_crossing(&in_ref, level));
+        out.push(check(
+            r,
+            &format!(
+                "{label}: first crossing of half the reference's peak ({level:.4}), {}",
+                spec.time
+            ),
+            cross_ours,
+            cross_ref,
+            (cross_ours - cross_ref).abs(),
+            None,
+        ));
     }
     out
+}
+
+/// The peak-between-outputs column of a wall sensor's reading column, if it is one.
+fn peak_column(column: &str) -> Option<String> {
+    if let Some(n) = column.strip_prefix("pstar_") {
+        Some(format!("pstarpeak_{n}"))
+    } else {
+        column.strip_prefix("p_").map(|n| format!("ppeak_{n}"))
+    }
+}
+
+/// ∫ y dt of (t, y) points by the trapezoidal rule.
+fn trapezoid(p: &[(f64, f64)]) -> f64 {
+    p.windows(2).map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0)).sum()
+}
+
+/// The first time (t, y) points reach `level`, interpolated linearly between them; NaN if they never do.
+fn first_crossing(p: &[(f64, f64)], level: f64) -> f64 {
+    if p.first().is_some_and(|q| q.1 >= level) {
+        return p[0].0;
+    }
+    p.windows(2)
+        .find(|w| w[0].1 < level && w[1].1 >= level)
+        .map_or(f64::NAN, |w| {
+            w[0].0 + (level - w[0].1) / (w[1].1 - w[0].1) * (w[1].0 - w[0].0)
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn impulse_and_first_crossing_of_a_ramp() {
+        let p: Vec<(f64, f64)> = (0..=10).map(|k| (k as f64 * 0.1, k as f64)).collect();
+        assert!((trapezoid(&p) - 5.0).abs() < 1e-12);
+        assert!((first_crossing(&p, 2.5) - 0.25).abs() < 1e-12);
+        assert!(first_crossing(&p, 11.0).is_nan());
+        assert_eq!(peak_column("pstar_P1").as_deref(), Some("pstarpeak_P1"));
+        assert_eq!(peak_column("p_P1").as_deref(), Some("ppeak_P1"));
+        assert_eq!(peak_column("eta_g"), None);
+    }
 }
 
 /// A plot per reference: the column against the reference's time unit, the reference as markers.
