@@ -138,22 +138,6 @@ fn first_crossing(p: &[(f64, f64)], level: f64) -> f64 {
         })
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn impulse_and_first_crossing_of_a_ramp() {
-        let p: Vec<(f64, f64)> = (0..=10).map(|k| (k as f64 * 0.1, k as f64)).collect();
-        assert!((trapezoid(&p) - 5.0).abs() < 1e-12);
-        assert!((first_crossing(&p, 2.5) - 0.25).abs() < 1e-12);
-        assert!(first_crossing(&p, 11.0).is_nan());
-        assert_eq!(peak_column("pstar_P1").as_deref(), Some("pstarpeak_P1"));
-        assert_eq!(peak_column("p_P1").as_deref(), Some("ppeak_P1"));
-        assert_eq!(peak_column("eta_g"), None);
-    }
-}
-
 /// A plot per reference: the column against the reference's time unit, the reference as markers.
 pub fn reference_plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = vec![];
@@ -186,4 +170,20 @@ pub fn reference_plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<PathBuf>
         files.push(p);
     }
     Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn impulse_and_first_crossing_of_a_ramp() {
+        let p: Vec<(f64, f64)> = (0..=10).map(|k| (k as f64 * 0.1, k as f64)).collect();
+        assert!((trapezoid(&p) - 5.0).abs() < 1e-12);
+        assert!((first_crossing(&p, 2.5) - 0.25).abs() < 1e-12);
+        assert!(first_crossing(&p, 11.0).is_nan());
+        assert_eq!(peak_column("pstar_P1").as_deref(), Some("pstarpeak_P1"));
+        assert_eq!(peak_column("p_P1").as_deref(), Some("ppeak_P1"));
+        assert_eq!(peak_column("eta_g"), None);
+    }
 }
