@@ -20,13 +20,15 @@ use nalgebra::Vector2;
 
 type V2 = Vector2<f64>;
 
-#[test]
-fn sensor_no_water_touches_reads_air_not_a_distant_splash() {
-    let (dx, rho0, c0, g) = (0.01, 1000.0, 20.0, 9.81);
-    let mut cfg = SolverConfig::new(dx, rho0, c0, BodyForce::Uniform(V2::new(0.0, -g)));
+/// Spacing (m), ρ0 (kg/m³) and c0 (m/s) of the splash scene.
+const SPLASH: (f64, f64, f64) = (0.01, 1000.0, 20.0);
+
+/// A 2 × 2 splash compressed to 0.1 % above ρ0 (p = 400 Pa), its lowest row 3 dx above a floor, and its density.
+fn splash_over_a_floor() -> (Simulation<2>, f64) {
+    let (dx, rho0, c0) = SPLASH;
+    let mut cfg = SolverConfig::new(dx, rho0, c0, BodyForce::Uniform(V2::new(0.0, -9.81)));
     cfg.h = 1.33 * dx;
     let support = 3.0 * cfg.h;
-    // A 2 x 2 splash compressed to 0.1 % above ρ0 (p = 400 Pa), its lowest row 3dx above a floor.
     let rho = rho0 * 1.001;
     let mut fluid = Fluid::default();
     for (i, j) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
@@ -41,7 +43,16 @@ fn sensor_no_water_touches_reads_air_not_a_distant_splash() {
         dx,
         support,
     );
-    let mut sim = Simulation::new(cfg, fluid, vec![Box::new(floor) as Box<dyn Boundary<2>>]);
+    (
+        Simulation::new(cfg, fluid, vec![Box::new(floor) as Box<dyn Boundary<2>>]),
+        rho,
+    )
+}
+
+#[test]
+fn sensor_no_water_touches_reads_air_not_a_distant_splash() {
+    let (_, rho0, c0) = SPLASH;
+    let (mut sim, rho) = splash_over_a_floor();
     sim.refresh();
     let p_splash = c0 * c0 * (rho - rho0);
     let probe = V2::zeros();
@@ -189,30 +200,8 @@ fn face_sensors_half_to_twenty_spacings_wide_read_the_integrated_hydrostatic_pre
 /// A face sensor under a splash that does not touch the wall reads about nothing (as the kernel sensor above).
 #[test]
 fn face_sensor_no_water_touches_reads_air() {
-    let (dx, rho0, c0, g) = (0.01, 1000.0, 20.0, 9.81);
-    let mut cfg = SolverConfig::new(dx, rho0, c0, BodyForce::Uniform(V2::new(0.0, -g)));
-    cfg.h = 1.33 * dx;
-    let support = 3.0 * cfg.h;
-    let rho = rho0 * 1.001;
-    let mut fluid = Fluid::default();
-    for (i, j) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
-        fluid.push(
-            V2::new((i as f64 - 0.5) * dx, (3.0 + j as f64) * dx),
-            V2::zeros(),
-            rho,
-            rho0 * dx * dx,
-            0.0,
-        );
-    }
-    let floor = PolylineWall::new(
-        "floor",
-        vec![V2::new(-0.2, 0.0), V2::new(0.2, 0.0)],
-        FluidSide::Left,
-        RigidMotion::Fixed,
-        dx,
-        support,
-    );
-    let mut sim = Simulation::new(cfg, fluid, vec![Box::new(floor) as Box<dyn Boundary<2>>]);
+    let (dx, rho0, c0) = SPLASH;
+    let (mut sim, rho) = splash_over_a_floor();
     let face = bowwave::sph::wall_sensor::WallSensor::face(
         V2::zeros(),
         V2::new(1.0, 0.0),

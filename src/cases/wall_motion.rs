@@ -65,39 +65,17 @@ impl Sine {
     }
 }
 
-/// The rows (time, sway, heave, roll) of a motion table.
+/// The columns (time, sway, heave, roll) of a motion table ([`super::reference_file::numeric_columns`]).
 pub fn load_table(path: &Path) -> anyhow::Result<[Vec<f64>; 4]> {
-    let text = std::fs::read_to_string(path).map_err(|e| anyhow::anyhow!("{}: cannot read: {e}", path.display()))?;
-    let mut rd = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .comment(Some(b'#'))
-        .flexible(true)
-        .trim(csv::Trim::All)
-        .from_reader(text.as_bytes());
-    let mut cols: [Vec<f64>; 4] = Default::default();
-    for rec in rd.records() {
-        let rec = rec.map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
-        let num: Vec<Option<f64>> = (0..4)
-            .map(|k| rec.get(k).and_then(|s| s.parse::<f64>().ok()).filter(|x| x.is_finite()))
-            .collect();
-        if num.iter().all(|v| v.is_some()) {
-            for k in 0..4 {
-                cols[k].push(num[k].unwrap());
-            }
-        }
-    }
+    let cols = super::reference_file::numeric_columns(path, 4)?;
     anyhow::ensure!(
         cols[0].len() >= 3,
         "{}: expected at least three rows of four numeric columns (time s, sway m, heave m, roll deg), found {}",
         path.display(),
         cols[0].len()
     );
-    anyhow::ensure!(
-        cols[0].windows(2).all(|w| w[1] > w[0]),
-        "{}: expected increasing times in the first column",
-        path.display()
-    );
-    Ok(cols)
+    let [t, x, y, r]: [Vec<f64>; 4] = cols.try_into().map_err(|_| anyhow::anyhow!("four columns"))?;
+    Ok([t, x, y, r])
 }
 
 /// Checks a wall's motion, but for its table's file ([`check_tables`]). Returns (field, what was expected).
