@@ -77,7 +77,7 @@ fn one() -> f64 {
 impl ReferenceSpec {
     /// The reference file's path.
     pub fn path(&self, case: &CaseFile) -> std::path::PathBuf {
-        case.dir.clone().unwrap_or_default().join(&self.file)
+        case.beside(&self.file)
     }
 }
 
@@ -382,6 +382,20 @@ impl CaseFile {
         Ok(case)
     }
 
+    /// A file the case names, relative to the case file's folder (the working directory for a case given as
+    /// text).
+    pub fn beside(&self, file: &str) -> std::path::PathBuf {
+        self.dir.clone().unwrap_or_default().join(file)
+    }
+
+    /// The index of the wall called `name`, or what a field naming a wall expects (the case's wall names).
+    pub fn wall_named(&self, name: &str) -> Result<usize, String> {
+        self.walls.iter().position(|w| w.name == name).ok_or_else(|| {
+            let names: Vec<&str> = self.walls.iter().map(|w| w.name.as_str()).collect();
+            format!("the name of one of the case's walls ({})", names.join(", "))
+        })
+    }
+
     /// The lowest height at which one of the case's walls (as drawn, at t = 0) crosses the vertical through
     /// `x`, or the domain's bottom if none does: a gauge's default floor.
     pub fn floor_under(&self, x: f64) -> f64 {
@@ -617,14 +631,8 @@ impl CaseFile {
                     ),
                 ));
             }
-            if let Some(w) = &g.moves_with {
-                if !self.walls.iter().any(|x| &x.name == w) {
-                    let names: Vec<&str> = self.walls.iter().map(|w| w.name.as_str()).collect();
-                    return Err(err(
-                        &format!("probes.gauge[{k}].moves_with"),
-                        &format!("the name of one of the case's walls ({})", names.join(", ")),
-                    ));
-                }
+            if let Some(Err(expected)) = g.moves_with.as_ref().map(|w| self.wall_named(w)) {
+                return Err(err(&format!("probes.gauge[{k}].moves_with"), &expected));
             }
             let (lo, hi) = (self.domain.min[d - 1], self.domain.max[d - 1]);
             if let Some(b) = g.bottom {

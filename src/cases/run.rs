@@ -305,25 +305,16 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     let mass = sim.fluid.total_mass();
     let has_gravity = matches!(case.body_force, super::case_file::BodyForceSpec::Gravity { .. });
     let t_scale = (l / g).sqrt();
-    let mut gauge_motion = vec![];
-    for g in &case.probes.gauge {
-        let wall = g
-            .moves_with
-            .as_ref()
-            .and_then(|name| case.walls.iter().find(|w| &w.name == name));
-        gauge_motion.push(match wall {
-            Some(w) => match (&w.velocity, super::wall_motion::law(case, w)?) {
-                (Some(v), _) => {
-                    let v = nalgebra::Vector2::new(v[0], v[1]);
-                    Some(crate::sph::rigid_pose::MotionLaw::new(move |t| {
-                        crate::sph::rigid_pose::Pose2::translation(v * t, v, nalgebra::Vector2::zeros())
-                    }))
-                }
-                (None, law) => law,
-            },
-            None => None,
-        });
-    }
+    let laws = super::wall_motion::laws(case)?;
+    let gauge_motion = case
+        .probes
+        .gauge
+        .iter()
+        .map(|g| {
+            let wall = g.moves_with.as_ref().and_then(|name| case.wall_named(name).ok());
+            wall.and_then(|w| laws[w].clone())
+        })
+        .collect();
     let sampler = Sampler {
         gauge_motion,
         t_scale,

@@ -38,16 +38,7 @@ pub fn place(case: &CaseFile, k: usize, p: &PressureProbe) -> Result<Placement, 
         .fold(0.0, f64::max);
     let tol = ON_WALL_TOLERANCE * extent;
     let candidates: Vec<usize> = match &p.wall {
-        Some(name) => match case.walls.iter().position(|w| &w.name == name) {
-            Some(i) => vec![i],
-            None => {
-                let names: Vec<&str> = case.walls.iter().map(|w| w.name.as_str()).collect();
-                return Err((
-                    field("wall"),
-                    format!("the name of one of the case's walls ({})", names.join(", ")),
-                ));
-            }
-        },
+        Some(name) => vec![case.wall_named(name).map_err(|expected| (field("wall"), expected))?],
         None => (0..case.walls.len()).collect(),
     };
     if candidates.is_empty() {

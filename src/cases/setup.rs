@@ -8,6 +8,7 @@ use crate::sph::{
     eos::Eos,
     particles::{Fluid, MAX_PARTICLES},
     polyline_wall::PolylineWall,
+    rigid_pose::MotionLaw,
     solver::{Simulation, SolverConfig},
     wall_sensor::{SensorFrame, WallSensor},
 };
@@ -137,47 +138,40 @@ fn velocity_at(velocity: &Option<Vec<f64>>, gradient: &Option<Vec<Vec<f64>>>, x:
     u
 }
 
-/// The walls of a case as ghost-particle boundaries.
-pub fn walls(case: &CaseFile, dx: f64, support: f64) -> anyhow::Result<Vec<Box<dyn Boundary<2>>>> {
-    let mut out = vec![];
-    for w in &case.walls {
-        let motion = match &w.velocity {
-            Some(v) => RigidMotion::ConstantVelocity(v2(v)),
-            None => RigidMotion::Fixed,
-        };
-        let mut wall = PolylineWall::new(
-            &w.name,
-            w.points.iter().map(|p| v2(p)).collect(),
-            w.fluid_side,
-            motion,
-            dx,
-            support,
-        )
-        .with_ghosts(w.ghosts);
-        if let Some(law) = super::wall_motion::law(case, w)? {
-            wall = wall.with_motion_law(law);
-        }
-        out.push(Box::new(wall) as Box<dyn Boundary<2>>);
-    }
-    Ok(out)
+/// The walls of a case as ghost-particle boundaries, each moving with its law (`laws`, from
+/// [`super::wall_motion::laws`]).
+pub fn walls(case: &CaseFile, dx: f64, support: f64, laws: &[Option<MotionLaw>]) -> Vec<Box<dyn Boundary<2>>> {
+    case.walls
+        .iter()
+        .zip(laws)
+        .map(|(w, law)| {
+            let mut wall = PolylineWall::new(
+                &w.name,
+                w.points.iter().map(|p| v2(p)).collect(),
+                w.fluid_side,
+                RigidMotion::Fixed,
+                dx,
+                support,
+            )
+            .with_ghosts(w.ghosts);
+            if let Some(law) = law {
+                wall = wall.with_motion_law(law.clone());
+            }
+            Box::new(wall) as Box<dyn Boundary<2>>
+        })
+        .collect()
 }
 
 /// The case's wall sensors (its pressure probes not `in_fluid`, in order) as faces on their walls, moving
-/// with them.
-pub fn wall_sensors(case: &CaseFile, dx: f64) -> anyhow::Result<Vec<WallSensor<2>>> {
+/// with them (`laws`, from [`super::wall_motion::laws`]).
+pub fn wall_sensors(case: &CaseFile, dx: f64, laws: &[Option<MotionLaw>]) -> anyhow::Result<Vec<WallSensor<2>>> {
     let mut out = vec![];
     for (k, p) in case.probes.pressure.iter().enumerate().filter(|(_, p)| !p.in_fluid) {
         let pl = super::sensor_placement::place(case, k, p)
             .map_err(|(field, expected)| anyhow::anyhow!("case `{}`: {field}: expected {expected}", case.name))?;
-        let wall = &case.walls[pl.wall];
-        let frame = match (super::wall_motion::law(case, wall)?, &wall.velocity) {
-            (Some(law), _) => Some(SensorFrame(Arc::new(move |t| law.pose(t).affine()))),
-            (None, Some(v)) => {
-                let v = v2(v);
-                Some(SensorFrame(Arc::new(move |t| (Matrix2::identity(), v * t))))
-            }
-            (None, None) => None,
-        };
+        let frame = laws[pl.wall]
+            .clone()
+            .map(|law| SensorFrame(Arc::new(move |t| law.pose(t).affine())));
         out.push(WallSensor::face(pl.centre, pl.tangent, p.size, pl.inward, frame, dx));
     }
     Ok(out)
@@ -253,8 +247,8 @@ pub fn build(case: &CaseFile, res: Option<f64>) -> anyhow::Result<Simulation<2>>
     let support = cfg.kernel.support_over_h() * cfg.h;
     check_size(case, dx, support)?;
     let fl = fluid(case, dx, &cfg.eos, &cfg.body_force);
-    let w = walls(case, dx, support)?;
-    let mut sim = Simulation::new(cfg, fl, w);
-    sim.set_sensors(wall_sensors(case, dx)?);
+    let laws = super::wall_motion::laws(case)?;
+    let mut sim = Simulation::new(cfg, fl, walls(case, dx, support, &laws));
+    sim.set_sensors(wall_sensors(case, dx, &laws)?);
     Ok(sim)
 }

@@ -74,8 +74,7 @@ pub fn load_table(path: &Path) -> anyhow::Result<[Vec<f64>; 4]> {
         path.display(),
         cols[0].len()
     );
-    let [t, x, y, r]: [Vec<f64>; 4] = cols.try_into().map_err(|_| anyhow::anyhow!("four columns"))?;
-    Ok([t, x, y, r])
+    cols.try_into().map_err(|_| anyhow::anyhow!("four columns"))
 }
 
 /// Checks a wall's motion, but for its table's file ([`check_tables`]). Returns (field, what was expected).
@@ -126,7 +125,7 @@ pub fn check_tables(case: &CaseFile, file: &str) -> Result<(), crate::input_erro
             continue;
         };
         let field = format!("walls[{k}].motion.table");
-        let path = case.dir.as_deref().unwrap_or(Path::new(".")).join(table);
+        let path = case.beside(table);
         let cols = load_table(&path).map_err(|e| {
             crate::input_error::InputError::field(file, &field, format!("a readable motion table: {e}"))
         })?;
@@ -140,6 +139,23 @@ pub fn check_tables(case: &CaseFile, file: &str) -> Result<(), crate::input_erro
         }
     }
     Ok(())
+}
+
+/// The pose law of every wall of a case, in order: its `motion`'s ([`law`]), a translation for a `velocity`, or
+/// `None` for a still wall. What the ghosts, the sensors and the gauges on a wall follow.
+pub fn laws(case: &CaseFile) -> anyhow::Result<Vec<Option<MotionLaw>>> {
+    case.walls
+        .iter()
+        .map(|w| {
+            Ok(match &w.velocity {
+                Some(v) => {
+                    let v = V2::new(v[0], v[1]);
+                    Some(MotionLaw::new(move |t| Pose2::translation(v * t, v, V2::zeros())))
+                }
+                None => law(case, w)?,
+            })
+        })
+        .collect()
 }
 
 /// The pose law of a wall with a motion (checked by [`check`]); `None` without one.
@@ -157,7 +173,7 @@ pub fn law(case: &CaseFile, w: &WallSpec) -> anyhow::Result<Option<MotionLaw>> {
         }
     };
     if let Some(file) = &m.table {
-        let path = case.dir.as_deref().unwrap_or(Path::new(".")).join(file);
+        let path = case.beside(file);
         let [t, sway, heave, roll] = load_table(&path)?;
         let (sx, sy, sr) = (
             CubicSpline::new(&t, &sway),

@@ -786,7 +786,12 @@ impl<const D: usize> Simulation<D> {
     /// impact" fell on that spike). Under water the reading is the Shepard average unchanged. Call after
     /// [`Simulation::refresh`].
     pub fn sensor_pressure_at(&self, x: &SVector<f64, D>) -> f64 {
-        self.pressure_at(x).unwrap_or(0.0) * (self.wet_fraction(x) / SENSOR_WET_FRACTION).min(1.0)
+        self.pressure_at(x).unwrap_or(0.0) * self.wetness(x)
+    }
+
+    /// A sensor's wetness at `x`: min(1, f / [`SENSOR_WET_FRACTION`]), f the [`Simulation::wet_fraction`].
+    pub fn wetness(&self, x: &SVector<f64, D>) -> f64 {
+        (self.wet_fraction(x) / SENSOR_WET_FRACTION).min(1.0)
     }
 
     /// f = Σ_fluid W V / (1 − Σ_ghosts W V_lattice) at `x`: the part of the fluid side of the support that water

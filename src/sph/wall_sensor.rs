@@ -17,8 +17,8 @@
 //! first stage has just prepared, at no extra neighbour search) and keeps, per sensor, the peak and the
 //! impulse ∫ p dt (trapezoidal rule over the steps) since the last call of [`Simulation::take_sensor_record`].
 
-use super::mls::mls_fit;
-use super::solver::{Simulation, SENSOR_WET_FRACTION};
+use super::mls::mls_weights;
+use super::solver::Simulation;
 use nalgebra::{SMatrix, SVector};
 use std::sync::Arc;
 
@@ -119,16 +119,12 @@ impl<const D: usize> Simulation<D> {
         let x_i = x_w + inward * (0.5 * self.cfg.dx);
         let mut nb = Vec::with_capacity(64);
         self.for_each_fluid_within(&x_i, |j, rij, r, volume| nb.push((j, rij, self.kernel.w(r) * volume)));
-        let fit = mls_fit(self.kernel.h, &nb);
-        let (mut p_i, mut rho_i) = (0.0, 0.0);
-        for (j, rij, wv) in &nb {
-            let (w, _) = fit.weight(rij, *wv);
-            p_i += self.pressure()[*j] * w;
-            rho_i += self.fluid.rho[*j] * w;
-        }
         if nb.is_empty() {
             return 0.0;
         }
+        let fit = mls_weights(self.kernel.h, &nb);
+        let p_i = fit.interpolate(|j| self.pressure()[j]);
+        let rho_i = fit.interpolate(|j| self.fluid.rho[j]);
         let a = self.cfg.body_force.acceleration(x_w);
         super::equations::ghost_conditions::neumann_pressure(p_i, rho_i, &a, &SVector::zeros(), &(x_w - x_i))
     }
@@ -145,7 +141,7 @@ impl<const D: usize> Simulation<D> {
             .iter()
             .map(|p| {
                 let x = r * p + b;
-                self.wall_pressure(&x, &inward) * (self.wet_fraction(&x) / SENSOR_WET_FRACTION).min(1.0)
+                self.wall_pressure(&x, &inward) * self.wetness(&x)
             })
             .sum();
         sum / sensor.points.len() as f64
