@@ -1,6 +1,7 @@
 //! Fluid particles stored as a structure of arrays.
 
 use nalgebra::SVector;
+use rayon::prelude::*;
 
 /// The most particles (fluid and ghosts), and neighbour-search cells, that a scene may ask for: 1e8, about
 /// 100 GB at the measured 0.75–1.1 KB per particle (BENCHMARKS.md), more than the machines this runs on
@@ -43,8 +44,8 @@ impl<const D: usize> Fluid<D> {
 
     /// Re-orders every field so that new index k holds old index `order[k]`.
     pub fn permute(&mut self, order: &[u32]) {
-        fn apply<T: Copy>(v: &mut Vec<T>, order: &[u32]) {
-            let new: Vec<T> = order.iter().map(|&k| v[k as usize]).collect();
+        fn apply<T: Copy + Send + Sync>(v: &mut Vec<T>, order: &[u32]) {
+            let new: Vec<T> = order.par_iter().map(|&k| v[k as usize]).collect();
             *v = new;
         }
         apply(&mut self.pos, order);

@@ -452,11 +452,11 @@ impl<const D: usize> Simulation<D> {
             )
             .collect();
         let gs = &mut self.ghosts;
-        gs.vel = values.iter().map(|v| v.0).collect();
-        gs.rho = values.iter().map(|v| v.1).collect();
-        gs.p = values.iter().map(|v| v.2).collect();
-        gs.grad_rho = values.iter().map(|v| v.3).collect();
-        gs.volume = values.iter().map(|v| v.4).collect();
+        gs.vel = values.par_iter().map(|v| v.0).collect();
+        gs.rho = values.par_iter().map(|v| v.1).collect();
+        gs.p = values.par_iter().map(|v| v.2).collect();
+        gs.grad_rho = values.par_iter().map(|v| v.3).collect();
+        gs.volume = values.par_iter().map(|v| v.4).collect();
         // An image's geometric volume is its particle's (the sensors' wet fraction counts it as solid side).
         for g in gs.n_fixed..gs.geom.len() {
             gs.geom.volume[g] = gs.volume[g];
@@ -560,18 +560,13 @@ impl<const D: usize> Simulation<D> {
                 (drho, dvel, signal)
             })
             .collect();
-        let mut rates = Rates {
-            drho: Vec::with_capacity(nf),
-            dvel: Vec::with_capacity(nf),
-            max_signal: 0.0,
-            max_accel: 0.0,
+        // max is exact and order-free, so the parallel reductions give the same bits for any thread count.
+        let rates = Rates {
+            drho: out.par_iter().map(|o| o.0).collect(),
+            dvel: out.par_iter().map(|o| o.1).collect(),
+            max_signal: out.par_iter().map(|o| o.2).reduce(|| 0.0, f64::max),
+            max_accel: out.par_iter().map(|o| o.1.norm()).reduce(|| 0.0, f64::max),
         };
-        for (dr, dv, s) in out {
-            rates.max_signal = rates.max_signal.max(s);
-            rates.max_accel = rates.max_accel.max(dv.norm());
-            rates.drho.push(dr);
-            rates.dvel.push(dv);
-        }
         self.timings.main_loop += clock.elapsed().as_secs_f64();
         rates
     }
@@ -618,12 +613,12 @@ impl<const D: usize> Simulation<D> {
             ));
         }
         let axpy = |a: f64, vel_rate: &[SVector<f64, D>], k: &Rates<D>| {
-            let pos: Vec<_> = pos0.iter().zip(vel_rate).map(|(p, v)| p + v * a).collect();
-            let vel: Vec<_> = vel0.iter().zip(&k.dvel).map(|(u, du)| u + du * a).collect();
-            let rho: Vec<_> = rho0.iter().zip(&k.drho).map(|(r, dr)| r + dr * a).collect();
+            let pos: Vec<_> = pos0.par_iter().zip(vel_rate).map(|(p, v)| p + v * a).collect();
+            let vel: Vec<_> = vel0.par_iter().zip(&k.dvel).map(|(u, du)| u + du * a).collect();
+            let rho: Vec<_> = rho0.par_iter().zip(&k.drho).map(|(r, dr)| r + dr * a).collect();
             (pos, vel, rho)
         };
-        let (pos, vel, rho) = match self.cfg.integrator {
+        let (pos, vel, rho): (Vec<SVector<f64, D>>, Vec<SVector<f64, D>>, Vec<f64>) = match self.cfg.integrator {
             Integrator::Rk4 => {
                 let (p2, v2, r2) = axpy(0.5 * dt, &vel0, &k1);
                 let k2 = self.rates(t0 + 0.5 * dt, &p2, &v2, &r2);
@@ -633,14 +628,18 @@ impl<const D: usize> Simulation<D> {
                 let k4 = self.rates(t0 + dt, &p4, &v4, &r4);
                 let w = dt / 6.0;
                 let n = pos0.len();
-                let mut pos = Vec::with_capacity(n);
-                let mut vel = Vec::with_capacity(n);
-                let mut rho = Vec::with_capacity(n);
-                for i in 0..n {
-                    pos.push(pos0[i] + (vel0[i] + v2[i] * 2.0 + v3[i] * 2.0 + v4[i]) * w);
-                    vel.push(vel0[i] + (k1.dvel[i] + k2.dvel[i] * 2.0 + k3.dvel[i] * 2.0 + k4.dvel[i]) * w);
-                    rho.push(rho0[i] + (k1.drho[i] + 2.0 * k2.drho[i] + 2.0 * k3.drho[i] + k4.drho[i]) * w);
-                }
+                let pos = (0..n)
+                    .into_par_iter()
+                    .map(|i| pos0[i] + (vel0[i] + v2[i] * 2.0 + v3[i] * 2.0 + v4[i]) * w)
+                    .collect();
+                let vel = (0..n)
+                    .into_par_iter()
+                    .map(|i| vel0[i] + (k1.dvel[i] + k2.dvel[i] * 2.0 + k3.dvel[i] * 2.0 + k4.dvel[i]) * w)
+                    .collect();
+                let rho = (0..n)
+                    .into_par_iter()
+                    .map(|i| rho0[i] + (k1.drho[i] + 2.0 * k2.drho[i] + 2.0 * k3.drho[i] + k4.drho[i]) * w)
+                    .collect();
                 (pos, vel, rho)
             }
             Integrator::PredictorCorrector => {
@@ -648,42 +647,46 @@ impl<const D: usize> Simulation<D> {
                 let k2 = self.rates(t0 + dt, &p2, &v2, &r2);
                 let w = 0.5 * dt;
                 let n = pos0.len();
-                let mut pos = Vec::with_capacity(n);
-                let mut vel = Vec::with_capacity(n);
-                let mut rho = Vec::with_capacity(n);
-                for i in 0..n {
-                    pos.push(pos0[i] + (vel0[i] + v2[i]) * w);
-                    vel.push(vel0[i] + (k1.dvel[i] + k2.dvel[i]) * w);
-                    rho.push(rho0[i] + (k1.drho[i] + k2.drho[i]) * w);
-                }
+                let pos = (0..n)
+                    .into_par_iter()
+                    .map(|i| pos0[i] + (vel0[i] + v2[i]) * w)
+                    .collect();
+                let vel = (0..n)
+                    .into_par_iter()
+                    .map(|i| vel0[i] + (k1.dvel[i] + k2.dvel[i]) * w)
+                    .collect();
+                let rho = (0..n)
+                    .into_par_iter()
+                    .map(|i| rho0[i] + (k1.drho[i] + k2.drho[i]) * w)
+                    .collect();
                 (pos, vel, rho)
             }
         };
         // Wall-penetration safeguard (counted, reported in the series).
-        let (mut pos, mut vel) = (pos, vel);
+        let (mut pos, mut vel): (Vec<SVector<f64, D>>, Vec<SVector<f64, D>>) = (pos, vel);
         let t1 = t0 + dt;
-        for (x, u) in pos.iter_mut().zip(vel.iter_mut()) {
-            for b in &self.boundaries {
-                if b.keep_out(t1, x, u) {
-                    self.wall_corrections += 1;
-                }
-            }
-        }
-        // Checks before accepting the step.
-        for i in 0..pos.len() {
-            let finite =
-                rho[i].is_finite() && pos[i].iter().all(|x| x.is_finite()) && vel[i].iter().all(|x| x.is_finite());
-            if !finite {
-                return Err(self.blow_up(BlowUpReason::NotFinite, Some(i)));
-            }
+        let boundaries = &self.boundaries;
+        let corrections: usize = pos
+            .par_iter_mut()
+            .zip(vel.par_iter_mut())
+            .map(|(x, u)| boundaries.iter().filter(|b| b.keep_out(t1, x, u)).count())
+            .sum();
+        self.wall_corrections += corrections as u64;
+        // Checks before accepting the step (the first offending particle, whatever the thread count).
+        let not_finite = (0..pos.len()).into_par_iter().position_first(|i| {
+            !(rho[i].is_finite() && pos[i].iter().all(|x| x.is_finite()) && vel[i].iter().all(|x| x.is_finite()))
+        });
+        if let Some(i) = not_finite {
+            return Err(self.blow_up(BlowUpReason::NotFinite, Some(i)));
         }
         if let Some((lo, hi)) = self.cfg.domain {
-            for (i, p) in pos.iter().enumerate() {
-                if (0..D).any(|d| p[d] < lo[d] || p[d] > hi[d]) {
-                    let mut bu = self.blow_up(BlowUpReason::LeftDomain, Some(i));
-                    bu.particle = Some((self.fluid.id[i], p.iter().copied().collect()));
-                    return Err(bu);
-                }
+            let outside = pos
+                .par_iter()
+                .position_first(|p| (0..D).any(|d| p[d] < lo[d] || p[d] > hi[d]));
+            if let Some(i) = outside {
+                let mut bu = self.blow_up(BlowUpReason::LeftDomain, Some(i));
+                bu.particle = Some((self.fluid.id[i], pos[i].iter().copied().collect()));
+                return Err(bu);
             }
         }
         self.fluid.pos = pos;
