@@ -260,6 +260,8 @@ pub struct Simulation<const D: usize> {
     cells: CellList<D>,
     all_pos: Vec<SVector<f64, D>>,
     pressure: Vec<f64>,
+    /// Each fluid particle's volume m/ρ at the current stage (m^D), computed once per stage.
+    volume: Vec<f64>,
     grad_rho: Vec<SVector<f64, D>>,
     /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
     neighbours: Vec<Vec<u32>>,
@@ -294,6 +296,7 @@ impl<const D: usize> Simulation<D> {
             cells: CellList::default(),
             all_pos: vec![],
             pressure: vec![],
+            volume: vec![],
             grad_rho: vec![],
             neighbours: vec![],
             ghosts_static: false,
@@ -380,6 +383,7 @@ impl<const D: usize> Simulation<D> {
         self.cells = CellList::build(&self.all_pos, self.kernel.support);
         let eos = self.cfg.eos;
         self.pressure = rho.par_iter().map(|&r| eos.pressure(r)).collect();
+        self.volume = self.fluid.mass.par_iter().zip(rho).map(|(m, r)| m / r).collect();
         self.timings.neighbour_search += clock.elapsed().as_secs_f64();
         let clock = Instant::now();
 
@@ -388,7 +392,7 @@ impl<const D: usize> Simulation<D> {
         let cells = &self.cells;
         let all_pos = &self.all_pos;
         let pressure = &self.pressure;
-        let mass = &self.fluid.mass;
+        let volume = &self.volume;
         let body = self.cfg.body_force;
         let geom = &self.ghosts.geom;
         let (n_fixed, image_source) = (self.ghosts.n_fixed, &self.ghosts.image_source);
@@ -402,7 +406,7 @@ impl<const D: usize> Simulation<D> {
                     nb.clear();
                     // The fluid only (indices below nf): the scan of each cell stops at its first ghost.
                     cells.for_each_below_within(all_pos, &xi, kernel.support, nf, |j, rij, r| {
-                        nb.push((j, rij, kernel.w(r) * mass[j] / rho[j]));
+                        nb.push((j, rij, kernel.w(r) * volume[j]));
                     });
                     let wall_vel = geom.wall_vel[g];
                     if nb.is_empty() {
@@ -439,7 +443,7 @@ impl<const D: usize> Simulation<D> {
                         let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
                         let p =
                             ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
-                        return (u, eos.density(p), p, grad_g, mass[j] / rho[j]);
+                        return (u, eos.density(p), p, grad_g, volume[j]);
                     }
                     let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
                     let u_g = match geom.mirror[g] {
@@ -471,7 +475,7 @@ impl<const D: usize> Simulation<D> {
         let kernel = self.kernel;
         let cells = &self.cells;
         let all_pos = &self.all_pos;
-        let mass = &self.fluid.mass;
+        let volume = &self.volume;
         let gs = &self.ghosts;
         let cfg = &self.cfg;
         let h = kernel.h;
@@ -500,7 +504,7 @@ impl<const D: usize> Simulation<D> {
                     if need_grad {
                         let gw = rij * gf.at(r2);
                         let (rho_j, v_j) = if j < nf {
-                            (rho[j], mass[j] / rho[j])
+                            (rho[j], volume[j])
                         } else {
                             (gs.rho[j - nf], gs.volume[j - nf])
                         };
@@ -539,7 +543,7 @@ impl<const D: usize> Simulation<D> {
                     let r2 = rij.norm_squared();
                     let gw = rij * gf.at(r2);
                     let (u_j, rho_j, p_j, v_j, grad_j) = if j < nf {
-                        (vel[j], rho[j], pressure[j], mass[j] / rho[j], grad_rho[j])
+                        (vel[j], rho[j], pressure[j], volume[j], grad_rho[j])
                     } else {
                         let g = j - nf;
                         (gs.vel[g], gs.rho[g], gs.p[g], gs.volume[g], gs.grad_rho[g])
