@@ -744,7 +744,7 @@ impl<const D: usize> Simulation<D> {
                         let gw = kernel.grad(&rij, r);
                         let u_ji = gs.vel[g] - fl.vel[j];
                         let pi = viscosity::pi_ij(&u_ji, &rij, r * r, kernel.h);
-                        let v_i = fl.mass[j] / fl.rho[j];
+                        let v_i = self.volume[j];
                         f += wall_force::pair_force(p[j], gs.p[g], visc * pi, &gw, v_i, gs.volume[g]);
                     });
                 f
@@ -761,8 +761,7 @@ impl<const D: usize> Simulation<D> {
     /// [`Simulation::refresh`].
     pub fn free_surface(&self, th: super::free_surface::Thresholds) -> super::free_surface::FreeSurface<D> {
         let nf = self.fluid.len();
-        let mut volume: Vec<f64> = (0..nf).map(|i| self.fluid.mass[i] / self.fluid.rho[i]).collect();
-        volume.extend_from_slice(&self.ghosts.volume);
+        let volume = [self.volume.as_slice(), &self.ghosts.volume].concat();
         super::free_surface::detect(&self.kernel, &self.cells, &self.all_pos, &volume, nf, th)
     }
 
@@ -827,7 +826,7 @@ impl<const D: usize> Simulation<D> {
         let nf = self.fluid.len();
         self.cells
             .for_each_below_within(&self.all_pos, x, self.kernel.support, nf, |j, rij, r| {
-                f(j, rij, r, self.fluid.mass[j] / self.fluid.rho[j])
+                f(j, rij, r, self.volume[j])
             });
     }
 
@@ -839,7 +838,7 @@ impl<const D: usize> Simulation<D> {
         self.cells
             .for_each_within(&self.all_pos, x, self.kernel.support, |j, _, r| {
                 let (p, v) = if j < nf {
-                    (self.pressure[j], self.fluid.mass[j] / self.fluid.rho[j])
+                    (self.pressure[j], self.volume[j])
                 } else {
                     (self.ghosts.p[j - nf], self.ghosts.volume[j - nf])
                 };
