@@ -133,6 +133,10 @@ pub struct Numerics {
     /// exact kernel on the dam break and the 2D+t chart for 10–25 % less CPU (docs/reference/speed-accuracy.md).
     #[serde(default = "default_kernel_table")]
     pub kernel_table: bool,
+    /// "none" (the default, the thesis's δ-SPH) or "sun2017": particle shifting after each step
+    /// (`sph::particle_shifting`).
+    #[serde(default)]
+    pub shifting: crate::sph::particle_shifting::ParticleShifting,
 }
 
 fn default_kernel_table() -> bool {
@@ -158,6 +162,7 @@ impl Default for Numerics {
             viscosity: Viscosity::default(),
             ghost_interpolation: Default::default(),
             kernel_table: true,
+            shifting: Default::default(),
         }
     }
 }

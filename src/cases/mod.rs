@@ -5,6 +5,7 @@ pub mod box_tank;
 pub mod builtin;
 pub mod case_file;
 pub mod cavity_probe;
+pub mod overrides;
 pub mod reference_file;
 pub mod run;
 pub mod sensor_placement;

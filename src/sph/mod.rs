@@ -15,6 +15,7 @@ pub mod kernel_table;
 pub mod mls;
 pub mod neighbours;
 pub mod packing;
+pub mod particle_shifting;
 pub mod particles;
 pub mod polyline_wall;
 pub mod rigid_pose;

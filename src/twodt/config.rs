@@ -7,6 +7,7 @@
 //! there. Lengths are in units of the ship length L, speeds in √(gL).
 
 use crate::sph::density_diffusion::DensityDiffusion;
+use crate::sph::particle_shifting::ParticleShifting;
 use serde::{Deserialize, Serialize};
 
 /// A value written as one of a few words or as a number: [`Until`] and [`PlungeCirculation`], on the
@@ -271,6 +272,11 @@ pub struct TwoDtConfig {
     /// method comparisons.
     #[arg(long, default_value_t = d().diffusion)]
     pub diffusion: DensityDiffusion,
+    /// Particle shifting after each step: none (the thesis's δ-SPH) or sun2017 (δ⁺-SPH, Sun et al. 2017:
+    /// removes the fixed ghosts' over-pressure where the flow leaves a wall or turns a corner, as the run-up
+    /// does at the keel; docs/reference/method.md, "Particle shifting").
+    #[arg(long, default_value_t = d().shifting)]
+    pub shifting: ParticleShifting,
     /// Evaluate the Gaussian kernel's gradient at every pair instead of from its table in r² (the table
     /// changes positions by about 1e-6 dx for 10–25 % less CPU; docs/reference/speed-accuracy.md).
     #[arg(long)]
@@ -311,6 +317,7 @@ impl Default for TwoDtConfig {
             plunge_circulation: PlungeCirculation::AtLeast(0.02),
             output_dx: 0.005,
             diffusion: DensityDiffusion::DeltaSph,
+            shifting: ParticleShifting::None,
             exact_kernel: false,
             cfl: None,
             packing: Packing::Auto,

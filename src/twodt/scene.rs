@@ -216,6 +216,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     cfg_s.h = h;
     cfg_s.diffusion = cfg.diffusion;
     cfg_s.kernel_table = !cfg.exact_kernel;
+    cfg_s.shifting = cfg.shifting;
     if let Some(cfl) = cfg.cfl {
         cfg_s.cfl = cfl;
     }

@@ -233,13 +233,15 @@ pub const TANK_3D: &str = "tank-3d";
 
 /// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
 ///
-/// `ghosts`: if given, the ghost kind of every wall of every case (as `bowwave validate --ghosts`).
+/// `overrides`: settings given on the command line for every case (`--ghosts`, `--shifting`); the 3D tank
+/// takes the ghost kind only.
 pub fn validate_cli(
     case: Option<&str>,
     res: Option<f64>,
     out: Option<&Path>,
-    ghosts: Option<GhostKind>,
+    overrides: &cases::overrides::CaseOverrides,
 ) -> anyhow::Result<bool> {
+    let ghosts = overrides.ghosts;
     let names: Vec<&str> = match case {
         Some(n) => vec![n],
         None => cases::builtin::builtin_names().into_iter().chain([TANK_3D]).collect(),
@@ -264,9 +266,7 @@ pub fn validate_cli(
             continue;
         }
         let mut c = cases::load(n)?;
-        if let Some(kind) = ghosts {
-            c.set_ghosts(kind);
-        }
+        overrides.apply(&mut c);
         let res = res.or(full_resolution(n));
         eprintln!(
             "validating {n} at resolution {:.0} ...",

@@ -1,6 +1,7 @@
 //! `run`, `validate` and `cases`: the solver's cases (built-in or TOML), run, validated or listed.
 
-use crate::options::GhostsArg;
+use crate::options::{GhostsArg, ShiftingArg};
+use bowwave::cases::overrides::CaseOverrides;
 use bowwave::{cases, validation};
 use clap::Args;
 use std::path::PathBuf;
@@ -30,6 +31,11 @@ pub struct RunArgs {
     /// Landrini 2003; corners keep fixed ghosts). Default: the case's (fixed unless it says otherwise).
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
+    /// Particle shifting after each step, overriding the case file: `none` (the thesis's δ-SPH, the default)
+    /// or `sun2017` (the δ⁺-SPH shifting of Sun et al. 2017, which removes the fixed ghosts' over-pressure at
+    /// stagnation points and corners; docs/reference/method.md, "Particle shifting").
+    #[arg(long, value_enum)]
+    pub shifting: Option<ShiftingArg>,
     /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
     /// (by default such a rise is diagnosed as an unstable time integration or a non-conservative term).
     #[arg(long)]
@@ -40,9 +46,11 @@ impl RunArgs {
     /// Runs the case; its exit status is non-zero after a blow-up.
     pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let mut case = cases::load(&self.case)?;
-        if let Some(kind) = self.ghosts {
-            case.set_ghosts(kind.into());
+        CaseOverrides {
+            ghosts: self.ghosts.map(Into::into),
+            shifting: self.shifting.map(Into::into),
         }
+        .apply(&mut case);
         let out = self.out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
         let opts = cases::run::RunOptions {
             res: self.res,
@@ -71,6 +79,9 @@ pub struct ValidateArgs {
     /// Ghosts of every wall's straight sides, overriding the case files (see `run --help`).
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
+    /// Particle shifting, overriding the case files (see `run --help`).
+    #[arg(long, value_enum)]
+    pub shifting: Option<ShiftingArg>,
 }
 
 impl ValidateArgs {
@@ -80,7 +91,10 @@ impl ValidateArgs {
             self.case.as_deref(),
             self.res,
             self.out.as_deref(),
-            self.ghosts.map(Into::into),
+            &CaseOverrides {
+                ghosts: self.ghosts.map(Into::into),
+                shifting: self.shifting.map(Into::into),
+            },
         )?;
         Ok(if ok {
             std::process::ExitCode::SUCCESS

@@ -1,0 +1,148 @@
+//! Particle shifting of the δ⁺-SPH of Sun, Colagrossi, Marrone & Zhang (2017), an option after each step.
+//!
+//! δr_i = −CFL·Ma·(2h)² Σ_j [1 + R (W_ij / W(Δx))^n] ∇_i W_ij V_j, with CFL·Ma = U_max Δt / h, so that the
+//! coefficient is [`A`] h U_max Δt with A = 4; R = 0.2, n = 4 as in the paper. Near the free surface only the
+//! part tangent to it is kept, and splashes do not move; both are read from the minimum eigenvalue λ of the
+//! renormalisation matrix and the normal of thesis §7.2 ([`super::free_surface`]): λ ≤ 0.2 no shift, λ ≤ 0.75
+//! or a free-surface particle the tangential part, otherwise all of it. The density is carried to the new
+//! position to first order with the renormalised gradient of eq. (4.19) (ρ_i += ∇ρ_i · δr_i); the velocity is
+//! not corrected (the paper's simple form).
+//!
+//! Why it is here (issue #35): at a stagnation point that the flow leaves a wall from, the Lagrangian particles
+//! move apart along the outflow and a void opens over the fixed ghosts; the ghosts' MLS values, extrapolated
+//! into the void, over-read the pressure by a factor up to 2.8 (`jet-floor`) and the dam break's corner by
+//! 20–60 %. Shifting keeps the particles spread evenly and removes most of it
+//! (docs/reference/method.md, "Particle shifting").
+
+use super::free_surface::FreeSurface;
+use super::kernel::Kernel;
+use super::neighbours::CellList;
+use nalgebra::SVector;
+use rayon::prelude::*;
+
+/// Whether (and whose) particle shifting runs after each step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ParticleShifting {
+    /// None: the thesis's δ-SPH (the default).
+    #[default]
+    None,
+    /// Sun et al. (2017), δ⁺-SPH.
+    Sun2017,
+}
+
+impl std::str::FromStr for ParticleShifting {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "none" => Ok(Self::None),
+            "sun2017" => Ok(Self::Sun2017),
+            v => Err(format!("expected `none` or `sun2017`, got `{v}`")),
+        }
+    }
+}
+
+impl std::fmt::Display for ParticleShifting {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::None => "none",
+            Self::Sun2017 => "sun2017",
+        })
+    }
+}
+
+/// A of δr = −A h U_max Δt Σ…: (2h)²/h² = 4 (Sun et al. 2017), dimensionless.
+pub const A: f64 = 4.0;
+/// R of the anti-clumping term (Sun et al. 2017: 0.2), dimensionless.
+pub const R: f64 = 0.2;
+/// Its power n (Sun et al. 2017: 4).
+pub const N: i32 = 4;
+/// The largest displacement in one step, in Δx: 0.25 (ours; a bound the shift reaches only where the
+/// particles are far from even, as at the first impacts).
+pub const CAP: f64 = 0.25;
+/// λ at or below which a particle does not move (splashes, thesis eq. 7.22's lower threshold).
+pub const LAMBDA_SPLASH: f64 = 0.2;
+/// λ at or below which only the tangential part is kept (eq. 7.22's upper threshold).
+pub const LAMBDA_SURFACE: f64 = 0.75;
+
+/// The shift of one particle from its sum S = Σ_j [1 + R (W_ij/W(Δx))^n] ∇_i W_ij V_j: −coef S, projected
+/// on the free surface's tangent where the particle is near it, zero in a splash, at most [`CAP`] Δx long.
+pub fn shift_from_sum<const D: usize>(
+    sum: &SVector<f64, D>,
+    coef: f64,
+    lambda: f64,
+    on_surface: bool,
+    normal: &SVector<f64, D>,
+    dx: f64,
+) -> SVector<f64, D> {
+    if lambda <= LAMBDA_SPLASH {
+        return SVector::zeros();
+    }
+    let mut d = -sum * coef;
+    if lambda <= LAMBDA_SURFACE || on_surface {
+        if normal.norm_squared() == 0.0 {
+            return SVector::zeros();
+        }
+        d -= normal * normal.dot(&d);
+    }
+    let m = d.norm();
+    if m > CAP * dx {
+        d *= CAP * dx / m;
+    }
+    d
+}
+
+/// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
+/// that takes no part), for a step of U_max Δt = `u_max_dt`.
+#[allow(clippy::too_many_arguments)]
+pub fn displacements<const D: usize>(
+    kernel: &Kernel<D>,
+    cells: &CellList<D>,
+    pos: &[SVector<f64, D>],
+    volume: &[f64],
+    n_fluid: usize,
+    fs: &FreeSurface<D>,
+    dx: f64,
+    u_max_dt: f64,
+) -> Vec<SVector<f64, D>> {
+    let w_dx = kernel.w(dx);
+    let coef = A * kernel.h * u_max_dt;
+    (0..n_fluid)
+        .into_par_iter()
+        .map(|i| {
+            if fs.lambda[i] <= LAMBDA_SPLASH {
+                return SVector::zeros();
+            }
+            let mut s = SVector::<f64, D>::zeros();
+            cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
+                if j == i || volume[j] == 0.0 {
+                    return;
+                }
+                let f = 1.0 + R * (kernel.w(r) / w_dx).powi(N);
+                s += kernel.grad(&rij, r) * (f * volume[j]);
+            });
+            shift_from_sum(&s, coef, fs.lambda[i], fs.on_surface[i], &fs.normal[i], dx)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    #[test]
+    fn a_splash_does_not_move_and_the_surface_moves_along_itself() {
+        let s = Vector2::new(3.0, -4.0);
+        let n = Vector2::new(0.0, 1.0);
+        assert_eq!(shift_from_sum(&s, 1e-3, 0.1, true, &n, 1.0), Vector2::zeros());
+        let d = shift_from_sum(&s, 1e-3, 0.5, false, &n, 1.0);
+        assert_eq!(d.y, 0.0);
+        assert!((d.x + 3e-3).abs() < 1e-15);
+        let d = shift_from_sum(&s, 1e-3, 0.9, false, &n, 1.0);
+        assert!((d - Vector2::new(-3e-3, 4e-3)).norm() < 1e-15);
+        // The cap: at most CAP dx.
+        let d = shift_from_sum(&s, 1.0, 0.9, false, &n, 1.0);
+        assert!((d.norm() - CAP).abs() < 1e-12);
+    }
+}
