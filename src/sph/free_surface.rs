@@ -69,20 +69,7 @@ pub fn detect<const D: usize>(
                 m += gw * (-rij).transpose() * volume[j];
                 s += gw * volume[j];
             });
-            let sym = (m + m.transpose()) * 0.5;
-            let lambda = min_eigenvalue(&sym);
-            let normal = match m.try_inverse() {
-                Some(b) if lambda > 1e-6 => {
-                    let xi = -(b * s);
-                    let n = xi.norm();
-                    if n > 0.0 {
-                        xi / n
-                    } else {
-                        SVector::zeros()
-                    }
-                }
-                _ => SVector::zeros(),
-            };
+            let (lambda, normal) = lambda_and_normal(&m, &s);
             let surface = if lambda <= th.lower {
                 true
             } else if lambda > th.upper {
@@ -100,6 +87,26 @@ pub fn detect<const D: usize>(
         on_surface: out.iter().map(|o| o.1).collect(),
         normal: out.iter().map(|o| o.2).collect(),
     }
+}
+
+/// λ, the minimum eigenvalue of B⁻¹ = `m` = Σ_j ∇W_ij ⊗ (r_j − r_i) V_j (7.21, its symmetric part), and the
+/// outward normal ξ/|ξ|, ξ = −B `s`, s = Σ_j ∇W_ij V_j (7.23); the normal is zero where B⁻¹ is singular.
+pub fn lambda_and_normal<const D: usize>(m: &SMatrix<f64, D, D>, s: &SVector<f64, D>) -> (f64, SVector<f64, D>) {
+    let sym = (m + m.transpose()) * 0.5;
+    let lambda = min_eigenvalue(&sym);
+    let normal = match m.try_inverse() {
+        Some(b) if lambda > 1e-6 => {
+            let xi = -(b * s);
+            let n = xi.norm();
+            if n > 0.0 {
+                xi / n
+            } else {
+                SVector::zeros()
+            }
+        }
+        _ => SVector::zeros(),
+    };
+    (lambda, normal)
 }
 
 /// Smallest eigenvalue of a symmetric D×D matrix (closed form in 2D, nalgebra's dynamic solver otherwise).

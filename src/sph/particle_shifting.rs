@@ -4,7 +4,7 @@
 //! coefficient is [`A`] h U_max Δt with A = 4; R = 0.2, n = 4 as in the paper. Near the free surface only the
 //! part tangent to it is kept, and splashes do not move; both are read from the minimum eigenvalue λ of the
 //! renormalisation matrix and the normal of thesis §7.2 ([`super::free_surface`]): λ ≤ 0.2 no shift, λ ≤ 0.75
-//! or a free-surface particle the tangential part, otherwise all of it. The density is carried to the new
+//! (every free-surface particle and the layer under it) the tangential part, otherwise all of it. The density is carried to the new
 //! position to first order with the renormalised gradient of eq. (4.19) (ρ_i += ∇ρ_i · δr_i); the velocity is
 //! not corrected (the paper's simple form).
 //!
@@ -14,10 +14,10 @@
 //! 20–60 %. Shifting keeps the particles spread evenly and removes most of it
 //! (docs/reference/method.md, "Particle shifting").
 
-use super::free_surface::FreeSurface;
+use super::free_surface::lambda_and_normal;
 use super::kernel::Kernel;
 use super::neighbours::CellList;
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
 use rayon::prelude::*;
 
 /// Whether (and whose) particle shifting runs after each step.
@@ -66,12 +66,12 @@ pub const LAMBDA_SPLASH: f64 = 0.2;
 pub const LAMBDA_SURFACE: f64 = 0.75;
 
 /// The shift of one particle from its sum S = Σ_j [1 + R (W_ij/W(Δx))^n] ∇_i W_ij V_j: −coef S, projected
-/// on the free surface's tangent where the particle is near it, zero in a splash, at most [`CAP`] Δx long.
+/// on the free surface's tangent (normal `normal`) where λ ≤ [`LAMBDA_SURFACE`], zero in a splash, at most
+/// [`CAP`] Δx long.
 pub fn shift_from_sum<const D: usize>(
     sum: &SVector<f64, D>,
     coef: f64,
     lambda: f64,
-    on_surface: bool,
     normal: &SVector<f64, D>,
     dx: f64,
 ) -> SVector<f64, D> {
@@ -79,7 +79,7 @@ pub fn shift_from_sum<const D: usize>(
         return SVector::zeros();
     }
     let mut d = -sum * coef;
-    if lambda <= LAMBDA_SURFACE || on_surface {
+    if lambda <= LAMBDA_SURFACE {
         if normal.norm_squared() == 0.0 {
             return SVector::zeros();
         }
@@ -93,15 +93,16 @@ pub fn shift_from_sum<const D: usize>(
 }
 
 /// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
-/// that takes no part), for a step of U_max Δt = `u_max_dt`.
-#[allow(clippy::too_many_arguments)]
+/// that takes no part), for a step of U_max Δt = `u_max_dt`. One pass over the neighbours gathers the shift's
+/// sum and the matrix and vector of §7.2 (λ and the normal, as [`super::free_surface::detect`] computes them);
+/// its scan-region test is not needed, since every particle it would decide (λ in (0.2, 0.75]) is projected
+/// on its tangent anyway.
 pub fn displacements<const D: usize>(
     kernel: &Kernel<D>,
     cells: &CellList<D>,
     pos: &[SVector<f64, D>],
     volume: &[f64],
     n_fluid: usize,
-    fs: &FreeSurface<D>,
     dx: f64,
     u_max_dt: f64,
 ) -> Vec<SVector<f64, D>> {
@@ -110,18 +111,21 @@ pub fn displacements<const D: usize>(
     (0..n_fluid)
         .into_par_iter()
         .map(|i| {
-            if fs.lambda[i] <= LAMBDA_SPLASH {
-                return SVector::zeros();
-            }
+            let mut m = SMatrix::<f64, D, D>::zeros();
             let mut s = SVector::<f64, D>::zeros();
+            let mut sum = SVector::<f64, D>::zeros();
             cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
                 if j == i || volume[j] == 0.0 {
                     return;
                 }
+                let gw = kernel.grad(&rij, r);
+                m += gw * (-rij).transpose() * volume[j];
+                s += gw * volume[j];
                 let f = 1.0 + R * (kernel.w(r) / w_dx).powi(N);
-                s += kernel.grad(&rij, r) * (f * volume[j]);
+                sum += gw * (f * volume[j]);
             });
-            shift_from_sum(&s, coef, fs.lambda[i], fs.on_surface[i], &fs.normal[i], dx)
+            let (lambda, normal) = lambda_and_normal(&m, &s);
+            shift_from_sum(&sum, coef, lambda, &normal, dx)
         })
         .collect()
 }
@@ -135,14 +139,14 @@ mod tests {
     fn a_splash_does_not_move_and_the_surface_moves_along_itself() {
         let s = Vector2::new(3.0, -4.0);
         let n = Vector2::new(0.0, 1.0);
-        assert_eq!(shift_from_sum(&s, 1e-3, 0.1, true, &n, 1.0), Vector2::zeros());
-        let d = shift_from_sum(&s, 1e-3, 0.5, false, &n, 1.0);
+        assert_eq!(shift_from_sum(&s, 1e-3, 0.1, &n, 1.0), Vector2::zeros());
+        let d = shift_from_sum(&s, 1e-3, 0.5, &n, 1.0);
         assert_eq!(d.y, 0.0);
         assert!((d.x + 3e-3).abs() < 1e-15);
-        let d = shift_from_sum(&s, 1e-3, 0.9, false, &n, 1.0);
+        let d = shift_from_sum(&s, 1e-3, 0.9, &n, 1.0);
         assert!((d - Vector2::new(-3e-3, 4e-3)).norm() < 1e-15);
         // The cap: at most CAP dx.
-        let d = shift_from_sum(&s, 1.0, 0.9, false, &n, 1.0);
+        let d = shift_from_sum(&s, 1.0, 0.9, &n, 1.0);
         assert!((d.norm() - CAP).abs() < 1e-12);
     }
 }

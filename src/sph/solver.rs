@@ -715,7 +715,6 @@ impl<const D: usize> Simulation<D> {
     /// The optional last stage of a step: particle shifting ([`super::particle_shifting`]) at the state just reached.
     fn shift(&mut self, dt: f64) {
         self.refresh();
-        let fs = self.free_surface(super::free_surface::Thresholds::default());
         let nf = self.fluid.len();
         let u_max = self.fluid.vel.par_iter().map(|u| u.norm()).reduce(|| 0.0, f64::max);
         let volume = [self.volume.as_slice(), &self.ghosts.volume].concat();
@@ -725,7 +724,6 @@ impl<const D: usize> Simulation<D> {
             &self.all_pos,
             &volume,
             nf,
-            &fs,
             self.cfg.dx,
             u_max * dt,
         );
