@@ -234,6 +234,8 @@ impl Observer<Simulation<2>> for Sampling<'_> {
                     self.cavity = self.cavity_watch.check(sim, self.dx, &self.wall_lines);
                 }
             }
+            // The particle shifting's own potential energy is not the integration's (`Simulation::shift_energy`).
+            let gain = gain - sim.shift_energy / self.sampler.e_scale;
             if self.check_energy && gain > ENERGY_GROWTH_LIMIT {
                 return Ok(Flow::Fail(BlowUp {
                     reason: BlowUpReason::EnergyGrowth {
