@@ -243,6 +243,16 @@ fn snapshot_sheet(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::
 
 /// The steady wave pattern η(x, y)/D of each case from its η(y) profiles at every output x/L (each section's
 /// free surface placed at x = U t + x0), with contours every 0.1 D and Fr_x = U/√(g x) marked along the top.
+/// The file of a case's wave-pattern map: `wave_pattern_frF.png`, or, where several finished cases share that
+/// Froude number (hull variants, method variants), `wave_pattern_frF_caseNN.png`, so that none overwrites another.
+fn wave_pattern_name(frs: &[f64], fr: f64, index: usize) -> String {
+    if frs.iter().filter(|&&f| f == fr).count() > 1 {
+        format!("wave_pattern_fr{fr:.3}_case{index:02}.png")
+    } else {
+        format!("wave_pattern_fr{fr:.3}.png")
+    }
+}
+
 fn wave_patterns(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = vec![];
     for r in recs {
@@ -286,7 +296,8 @@ fn wave_patterns(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::R
             .iter()
             .map(|&fx: &f64| ((fr / fx).powi(2), format!("Fr_x {fx}")))
             .collect();
-        let path = out.join(format!("wave_pattern_fr{:.3}.png", fr));
+        let frs: Vec<f64> = recs.iter().map(|o| o.result.fr).collect();
+        let path = out.join(wave_pattern_name(&frs, fr, r.spec.index));
         plot::field_map(
             &path,
             &format!("Wave pattern η/D, Fr = {fr} (contours every 0.1 D)"),
@@ -331,4 +342,19 @@ fn eta_field(x: &[f64], y: &[f64], eta: &[f64]) -> Option<Field> {
         dy,
         values,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::wave_pattern_name;
+
+    /// Regression: a study with several cases at one Froude number (the sensitivity sweeps, the shifting
+    /// study) wrote every case's map to the same `wave_pattern_frF.png`, each overwriting the last.
+    #[test]
+    fn cases_at_one_froude_number_get_a_wave_pattern_each() {
+        let frs = [0.5, 0.64, 0.5];
+        assert_eq!(wave_pattern_name(&frs, 0.5, 1), "wave_pattern_fr0.500_case01.png");
+        assert_eq!(wave_pattern_name(&frs, 0.5, 3), "wave_pattern_fr0.500_case03.png");
+        assert_eq!(wave_pattern_name(&frs, 0.64, 2), "wave_pattern_fr0.640.png");
+    }
 }
