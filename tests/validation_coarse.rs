@@ -102,9 +102,10 @@ fn jet_on_a_flat_wall_has_the_free_streamline_pressure() {
     assert_checks(&validation::jet_plate(&r));
 }
 
-fn run_with_image_ghosts(name: &str, res: f64) -> bowwave::cases::run::RunResult {
+/// A built-in case changed by `change` (named `what` in a failure), run at `res` to its end.
+fn run_changed(name: &str, res: f64, what: &str, change: impl FnOnce(&mut cases::CaseFile)) -> cases::run::RunResult {
     let mut case = cases::load(name).expect("built-in case parses");
-    case.set_ghosts(GhostKind::Images);
+    change(&mut case);
     let r = run(
         &case,
         &RunOptions {
@@ -113,8 +114,12 @@ fn run_with_image_ghosts(name: &str, res: f64) -> bowwave::cases::run::RunResult
         },
     )
     .expect("run");
-    assert!(r.blowup.is_none(), "{name} with image ghosts blew up: {:?}", r.blowup);
+    assert!(r.blowup.is_none(), "{name} with {what} blew up: {:?}", r.blowup);
     r
+}
+
+fn run_with_image_ghosts(name: &str, res: f64) -> cases::run::RunResult {
+    run_changed(name, res, "image ghosts", |c| c.set_ghosts(GhostKind::Images))
 }
 
 /// Two half-jets meeting over a floor (`jet-floor`) and a jet into the floor–wall corner (`jet-wall`), with
@@ -151,23 +156,10 @@ fn flow_leaving_a_floor_of_image_ghosts_keeps_the_stagnation_pressure() {
     }
 }
 
-fn run_with_shifting(name: &str, res: f64) -> bowwave::cases::run::RunResult {
-    let mut case = cases::load(name).expect("built-in case parses");
-    case.numerics.shifting = ParticleShifting::Sun2017;
-    let r = run(
-        &case,
-        &RunOptions {
-            res: Some(res),
-            ..Default::default()
-        },
-    )
-    .expect("run");
-    assert!(
-        r.blowup.is_none(),
-        "{name} with particle shifting blew up: {:?}",
-        r.blowup
-    );
-    r
+fn run_with_shifting(name: &str, res: f64) -> cases::run::RunResult {
+    run_changed(name, res, "particle shifting", |c| {
+        c.numerics.shifting = ParticleShifting::Sun2017
+    })
 }
 
 /// Regression (issue #35): the fixed ghosts over-read the pressure where the flow leaves a wall (`jet-floor`'s

@@ -59,17 +59,14 @@ pub fn detect<const D: usize>(
     let out: Vec<(f64, bool, SVector<f64, D>)> = (0..n_fluid)
         .into_par_iter()
         .map(|i| {
-            let mut m = SMatrix::<f64, D, D>::zeros();
-            let mut s = SVector::<f64, D>::zeros();
+            let mut sums = SurfaceSums::<D>::new();
             cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
                 if j == i || volume[j] == 0.0 {
                     return;
                 }
-                let gw = kernel.grad(&rij, r);
-                m += gw * (-rij).transpose() * volume[j];
-                s += gw * volume[j];
+                sums.add(&kernel.grad(&rij, r), &rij, volume[j]);
             });
-            let (lambda, normal) = lambda_and_normal(&m, &s);
+            let (lambda, normal) = sums.lambda_and_normal();
             let surface = if lambda <= th.lower {
                 true
             } else if lambda > th.upper {
@@ -89,24 +86,53 @@ pub fn detect<const D: usize>(
     }
 }
 
-/// λ, the minimum eigenvalue of B⁻¹ = `m` = Σ_j ∇W_ij ⊗ (r_j − r_i) V_j (7.21, its symmetric part), and the
-/// outward normal ξ/|ξ|, ξ = −B `s`, s = Σ_j ∇W_ij V_j (7.23); the normal is zero where B⁻¹ is singular.
-pub fn lambda_and_normal<const D: usize>(m: &SMatrix<f64, D, D>, s: &SVector<f64, D>) -> (f64, SVector<f64, D>) {
-    let sym = (m + m.transpose()) * 0.5;
-    let lambda = min_eigenvalue(&sym);
-    let normal = match m.try_inverse() {
-        Some(b) if lambda > 1e-6 => {
-            let xi = -(b * s);
-            let n = xi.norm();
-            if n > 0.0 {
-                xi / n
-            } else {
-                SVector::zeros()
-            }
+/// The sums of one particle's neighbours that §7.2 reads: B⁻¹ = Σ_j ∇W_ij ⊗ (r_j − r_i) V_j (7.21) and
+/// s = Σ_j ∇W_ij V_j (7.23).
+pub struct SurfaceSums<const D: usize> {
+    m: SMatrix<f64, D, D>,
+    s: SVector<f64, D>,
+}
+
+impl<const D: usize> SurfaceSums<D> {
+    pub fn new() -> Self {
+        SurfaceSums {
+            m: SMatrix::zeros(),
+            s: SVector::zeros(),
         }
-        _ => SVector::zeros(),
-    };
-    (lambda, normal)
+    }
+
+    /// Adds neighbour j: its kernel gradient ∇_i W_ij, r_ij = r_i − r_j and volume V_j.
+    #[inline]
+    pub fn add(&mut self, grad_w: &SVector<f64, D>, r_ij: &SVector<f64, D>, v_j: f64) {
+        self.m += grad_w * (-r_ij).transpose() * v_j;
+        self.s += grad_w * v_j;
+    }
+
+    /// λ, the minimum eigenvalue of B⁻¹ (its symmetric part), and the outward normal ξ/|ξ|, ξ = −B s (7.23);
+    /// the normal is zero where B⁻¹ is singular.
+    pub fn lambda_and_normal(&self) -> (f64, SVector<f64, D>) {
+        let sym = (self.m + self.m.transpose()) * 0.5;
+        let lambda = min_eigenvalue(&sym);
+        let normal = match self.m.try_inverse() {
+            Some(b) if lambda > 1e-6 => {
+                let xi = -(b * self.s);
+                let n = xi.norm();
+                if n > 0.0 {
+                    xi / n
+                } else {
+                    SVector::zeros()
+                }
+            }
+            _ => SVector::zeros(),
+        };
+        (lambda, normal)
+    }
+}
+
+impl<const D: usize> Default for SurfaceSums<D> {
+    fn default() -> Self {
+        Self::new()
+    }
 }
 
 /// Smallest eigenvalue of a symmetric D×D matrix (closed form in 2D, nalgebra's dynamic solver otherwise).

@@ -14,10 +14,10 @@
 //! 20–60 %. Shifting keeps the particles spread evenly and removes most of it
 //! (docs/reference/method.md, "Particle shifting").
 
-use super::free_surface::lambda_and_normal;
+use super::free_surface::SurfaceSums;
 use super::kernel::Kernel;
 use super::neighbours::CellList;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SVector;
 use rayon::prelude::*;
 
 /// Whether (and whose) particle shifting runs after each step.
@@ -111,20 +111,18 @@ pub fn displacements<const D: usize>(
     (0..n_fluid)
         .into_par_iter()
         .map(|i| {
-            let mut m = SMatrix::<f64, D, D>::zeros();
-            let mut s = SVector::<f64, D>::zeros();
+            let mut surface = SurfaceSums::<D>::new();
             let mut sum = SVector::<f64, D>::zeros();
             cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
                 if j == i || volume[j] == 0.0 {
                     return;
                 }
                 let gw = kernel.grad(&rij, r);
-                m += gw * (-rij).transpose() * volume[j];
-                s += gw * volume[j];
+                surface.add(&gw, &rij, volume[j]);
                 let f = 1.0 + R * (kernel.w(r) / w_dx).powi(N);
                 sum += gw * (f * volume[j]);
             });
-            let (lambda, normal) = lambda_and_normal(&m, &s);
+            let (lambda, normal) = surface.lambda_and_normal();
             shift_from_sum(&sum, coef, lambda, &normal, dx)
         })
         .collect()
