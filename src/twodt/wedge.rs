@@ -34,6 +34,8 @@ pub struct WedgeSpec {
     pub c0: Option<f64>,
     /// Water depth / `penetration` (the scene's Z/D; the similarity solution is for infinite depth).
     pub depth_over_draft: f64,
+    /// Particle shifting after each step (default none).
+    pub shifting: crate::sph::particle_shifting::ParticleShifting,
 }
 
 impl Default for WedgeSpec {
@@ -46,6 +48,7 @@ impl Default for WedgeSpec {
             dx: 1.0e-3,
             c0: None,
             depth_over_draft: 2.0,
+            shifting: Default::default(),
         }
     }
 }
@@ -189,6 +192,7 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         until: Until::X(x_end),
         c0: spec.c0,
         depth_over_draft: spec.depth_over_draft,
+        shifting: spec.shifting,
         ..Default::default()
     };
     let mut scene = build(hull, &cfg)?;

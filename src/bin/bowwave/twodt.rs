@@ -95,6 +95,9 @@ pub struct WedgeArgs {
     /// at 2, the scene's default, the bottom lies 2 Vt below the apex at the last default sample).
     #[arg(long, default_value_t = 2.0)]
     pub depth: f64,
+    /// Particle shifting after each step: none (the default) or sun2017 (docs/reference/method.md).
+    #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::None)]
+    pub shifting: bowwave::sph::particle_shifting::ParticleShifting,
     /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder.
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -118,6 +121,7 @@ impl WedgeArgs {
                     dx,
                     deadrise_deg: beta,
                     depth_over_draft: self.depth,
+                    shifting: self.shifting,
                     ..Default::default()
                 };
                 if self.c0 == "root" {
