@@ -241,8 +241,6 @@ fn snapshot_sheet(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::
     Ok(Some(path))
 }
 
-/// The steady wave pattern η(x, y)/D of each case from its η(y) profiles at every output x/L (each section's
-/// free surface placed at x = U t + x0), with contours every 0.1 D and Fr_x = U/√(g x) marked along the top.
 /// The file of a case's wave-pattern map: `wave_pattern_frF.png`, or, where several finished cases share that
 /// Froude number (hull variants, method variants), `wave_pattern_frF_caseNN.png`, so that none overwrites another.
 fn wave_pattern_name(frs: &[f64], fr: f64, index: usize) -> String {
@@ -253,8 +251,11 @@ fn wave_pattern_name(frs: &[f64], fr: f64, index: usize) -> String {
     }
 }
 
+/// The steady wave pattern η(x, y)/D of each case from its η(y) profiles at every output x/L (each section's
+/// free surface placed at x = U t + x0), with contours every 0.1 D and Fr_x = U/√(g x) marked along the top.
 fn wave_patterns(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::Result<Vec<PathBuf>> {
     let mut files = vec![];
+    let frs: Vec<f64> = recs.iter().map(|o| o.result.fr).collect();
     for r in recs {
         let Ok(t) = Table::read(&case_dir(study_out, &r.spec).join("eta.csv")) else {
             continue;
@@ -296,7 +297,6 @@ fn wave_patterns(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::R
             .iter()
             .map(|&fx: &f64| ((fr / fx).powi(2), format!("Fr_x {fx}")))
             .collect();
-        let frs: Vec<f64> = recs.iter().map(|o| o.result.fr).collect();
         let path = out.join(wave_pattern_name(&frs, fr, r.spec.index));
         plot::field_map(
             &path,

@@ -1,7 +1,8 @@
 //! `run`, `validate` and `cases`: the solver's cases (built-in or TOML), run, validated or listed.
 
-use crate::options::{GhostsArg, ShiftingArg};
+use crate::options::GhostsArg;
 use bowwave::cases::overrides::CaseOverrides;
+use bowwave::sph::particle_shifting::ParticleShifting;
 use bowwave::{cases, validation};
 use clap::Args;
 use std::path::PathBuf;
@@ -34,8 +35,8 @@ pub struct RunArgs {
     /// Particle shifting after each step, overriding the case file: `none` (the thesis's δ-SPH, the default)
     /// or `sun2017` (the δ⁺-SPH shifting of Sun et al. 2017, which removes the fixed ghosts' over-pressure at
     /// stagnation points and corners; docs/reference/method.md, "Particle shifting").
-    #[arg(long, value_enum)]
-    pub shifting: Option<ShiftingArg>,
+    #[arg(long)]
+    pub shifting: Option<ParticleShifting>,
     /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
     /// (by default such a rise is diagnosed as an unstable time integration or a non-conservative term).
     #[arg(long)]
@@ -48,7 +49,7 @@ impl RunArgs {
         let mut case = cases::load(&self.case)?;
         CaseOverrides {
             ghosts: self.ghosts.map(Into::into),
-            shifting: self.shifting.map(Into::into),
+            shifting: self.shifting,
         }
         .apply(&mut case);
         let out = self.out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
@@ -80,8 +81,8 @@ pub struct ValidateArgs {
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
     /// Particle shifting, overriding the case files (see `run --help`).
-    #[arg(long, value_enum)]
-    pub shifting: Option<ShiftingArg>,
+    #[arg(long)]
+    pub shifting: Option<ParticleShifting>,
 }
 
 impl ValidateArgs {
@@ -93,7 +94,7 @@ impl ValidateArgs {
             self.out.as_deref(),
             &CaseOverrides {
                 ghosts: self.ghosts.map(Into::into),
-                shifting: self.shifting.map(Into::into),
+                shifting: self.shifting,
             },
         )?;
         Ok(if ok {

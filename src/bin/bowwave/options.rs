@@ -16,22 +16,6 @@ impl From<GhostsArg> for bowwave::sph::polyline_wall::GhostKind {
     }
 }
 
-/// `--shifting`: the CLI's names for [`bowwave::sph::particle_shifting::ParticleShifting`].
-#[derive(Clone, Copy, Debug, clap::ValueEnum)]
-pub enum ShiftingArg {
-    None,
-    Sun2017,
-}
-
-impl From<ShiftingArg> for bowwave::sph::particle_shifting::ParticleShifting {
-    fn from(s: ShiftingArg) -> Self {
-        match s {
-            ShiftingArg::None => Self::None,
-            ShiftingArg::Sun2017 => Self::Sun2017,
-        }
-    }
-}
-
 /// A duration given in minutes on the command line: `None` for 0; an error naming the option otherwise.
 fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> {
     if !(m.is_finite() && m >= 0.0) {
