@@ -50,6 +50,10 @@ const FILES: &[(&str, &str)] = &[
         include_str!("../data/reference/zhao_faltinsen1993_wedge_similarity_pressure_sun2007fig2_6_digitised.csv"),
     ),
     (
+        "two_phase_drop",
+        include_str!("../data/reference/two_phase_concentric_drop_A0_Omega1_R1_z2_DERIVED.csv"),
+    ),
+    (
         "trixi_p1_centre",
         include_str!("../data/reference/trixiparticles_wcsph_damBreak_P4_H600_80_400.csv"),
     ),

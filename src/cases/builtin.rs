@@ -12,6 +12,12 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("jet-floor", include_str!("../../cases/jet-floor.toml")),
     ("sloshing-deep", include_str!("../../cases/sloshing-deep.toml")),
     ("sloshing-shallow", include_str!("../../cases/sloshing-shallow.toml")),
+    ("two-layer", include_str!("../../cases/two-layer.toml")),
+    ("two-phase-drop-2", include_str!("../../cases/two-phase-drop-2.toml")),
+    (
+        "two-phase-drop-100",
+        include_str!("../../cases/two-phase-drop-100.toml"),
+    ),
 ];
 
 /// The TOML text of a built-in case.

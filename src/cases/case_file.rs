@@ -19,7 +19,15 @@ pub struct CaseFile {
     #[serde(default = "two")]
     pub dimension: usize,
     pub scales: Scales,
+    /// The fluid; with `[[phases]]`, the first phase (phase 0).
     pub fluid: FluidSpec,
+    /// Further phases for the multi-fluid δ-SPH of Hammani et al. (`sph::multi_fluid`); none (the default):
+    /// one phase, the single-phase solver.
+    #[serde(default)]
+    pub phases: Vec<PhaseSpec>,
+    /// Constants of the multi-fluid model (read only with `[[phases]]`).
+    #[serde(default)]
+    pub multi_fluid: MultiFluidSpec,
     #[serde(default)]
     pub numerics: Numerics,
     pub body_force: BodyForceSpec,
@@ -106,6 +114,67 @@ pub struct FluidSpec {
     pub c0_over_sqrt_g_length: Option<f64>,
     #[serde(default)]
     pub eos: EosKind,
+    /// Its name, which blocks use to choose it when there are `[[phases]]`; default "water".
+    #[serde(default = "water")]
+    pub name: String,
+}
+
+fn water() -> String {
+    "water".into()
+}
+
+/// A further phase (`[[phases]]`), e.g. air over the water.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhaseSpec {
+    /// The name blocks choose it by (`blocks.phase`).
+    pub name: String,
+    /// ρ0 (kg/m³), e.g. 1 for air at a density ratio of 1000.
+    pub rho0: f64,
+    /// State equation; default `tait` (γ below).
+    #[serde(default = "tait")]
+    pub eos: EosKind,
+    /// The Tait exponent; default 1.4 (air, Grenier et al. §4.2).
+    #[serde(default = "air_gamma")]
+    pub gamma: f64,
+    /// Speed of sound (m/s). Default: the value that gives this phase the stiffness ρ0c0²/γ of `[fluid]`
+    /// (Hammani et al. eq. 23; 14.14 times the water's for air at a ratio of 1000), so that the interface
+    /// does not move under pressure differences the heavier phase hardly feels.
+    #[serde(default)]
+    pub c0: Option<f64>,
+}
+
+fn tait() -> EosKind {
+    EosKind::Tait
+}
+
+fn air_gamma() -> f64 {
+    1.4
+}
+
+/// `[multi_fluid]`: constants of the multi-fluid model.
+#[derive(Clone, Debug, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct MultiFluidSpec {
+    /// Background pressure p_b (Pa), added in the forces of every phase; default 0. Hammani et al. use 0.1 of
+    /// the largest hydrostatic pressure in a closed tank; it needs a closed domain (it pulls a free surface in).
+    #[serde(default)]
+    pub background_pressure: f64,
+    /// ε_I of Grenier et al. (2009) eq. 23, a repulsion between phases; default 0 (off).
+    #[serde(default)]
+    pub interface_repulsion: f64,
+    /// The volume-diffusion term's form: `factor-two` (the default, the δ-SPH term mapped to volumes) or
+    /// `as-printed` (Hammani et al. eq. 20 as printed, without the factor 2).
+    #[serde(default)]
+    pub diffusion: crate::sph::multi_fluid::VolumeDiffusion,
+    /// Take the multi-fluid path even with the `[fluid]` alone (default false: one phase runs the
+    /// single-phase solver): to compare the two on the same case.
+    #[serde(default)]
+    pub with_one_phase: bool,
+    /// The density the state equation reads: `shepard` (Hammani et al. eq. 13 over the particle's phase) or
+    /// `integrated` (m/V of the particle itself).
+    #[serde(default)]
+    pub density: crate::sph::multi_fluid::StateDensity,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -216,6 +285,9 @@ pub enum BlockSpec {
     Rectangle {
         min: Vec<f64>,
         max: Vec<f64>,
+        /// The phase's name (`[fluid]` or one of `[[phases]]`); default the `[fluid]`.
+        #[serde(default)]
+        phase: Option<String>,
         #[serde(default)]
         pressure: PressureSpec,
         #[serde(default)]
@@ -223,10 +295,17 @@ pub enum BlockSpec {
         #[serde(default)]
         velocity_gradient: Option<Vec<Vec<f64>>>,
     },
-    /// Particles on concentric rings of spacing dx inside a disc (m).
+    /// Particles on concentric rings of spacing dx inside a disc (m), or inside the annulus between
+    /// `inner_radius` and `radius`.
     Disc {
         centre: Vec<f64>,
         radius: f64,
+        /// Inner radius (m) of an annulus; default 0, a whole disc.
+        #[serde(default)]
+        inner_radius: f64,
+        /// The phase's name; default the `[fluid]`.
+        #[serde(default)]
+        phase: Option<String>,
         #[serde(default)]
         pressure: PressureSpec,
         #[serde(default)]
@@ -243,10 +322,19 @@ pub enum PressureSpec {
     /// p = 0.
     #[default]
     Zero,
-    /// Hydrostatic with the free surface at the block's top (gravity along −y).
-    Hydrostatic,
-    /// p = p_centre (1 − |x − c|²/R²) (Pa): the initial pressure of the drops.
-    Paraboloid { p_centre: f64 },
+    /// Hydrostatic in the block's phase (gravity along −y), `top` (Pa, default 0: a free surface) at the
+    /// block's top: the weight of the layers above, e.g. of the air over the water.
+    Hydrostatic {
+        #[serde(default)]
+        top: f64,
+    },
+    /// p = p_rim + (p_centre − p_rim)(1 − |x − c|²/R²) (Pa), R the block's radius (half diagonal for a
+    /// rectangle): the initial pressure of the drops; `p_rim` default 0 (a free surface at R).
+    Paraboloid {
+        p_centre: f64,
+        #[serde(default)]
+        p_rim: f64,
+    },
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, Default)]
@@ -446,6 +534,72 @@ impl CaseFile {
         c
     }
 
+    /// The names of the phases in their order: `[fluid]` (phase 0), then `[[phases]]`.
+    pub fn phase_names(&self) -> Vec<&str> {
+        std::iter::once(self.fluid.name.as_str())
+            .chain(self.phases.iter().map(|p| p.name.as_str()))
+            .collect()
+    }
+
+    /// The phase index a block's `phase` names (0, the `[fluid]`, when it names none).
+    pub fn phase_index(&self, name: Option<&str>) -> Result<u8, String> {
+        let names = self.phase_names();
+        match name {
+            None => Ok(0),
+            Some(n) => names
+                .iter()
+                .position(|m| *m == n)
+                .map(|k| k as u8)
+                .ok_or_else(|| format!("the name of a phase ({})", names.join(", "))),
+        }
+    }
+
+    fn check_phases(&self, file: &str) -> Result<(), InputError> {
+        let err = |field: &str, expected: &str| InputError::field(file, field, expected);
+        if self.phases.len() > 254 {
+            return Err(err("phases", "at most 254 further phases"));
+        }
+        for (k, p) in self.phases.iter().enumerate() {
+            if p.name.is_empty() || self.phase_names()[..=k].contains(&p.name.as_str()) {
+                return Err(err(
+                    &format!("phases[{k}].name"),
+                    "a name of its own (not the `[fluid]`'s nor another phase's)",
+                ));
+            }
+            if !(p.rho0.is_finite() && p.rho0 > 0.0) {
+                return Err(err(&format!("phases[{k}].rho0"), "a positive density in kg/m³"));
+            }
+            if !(p.gamma.is_finite() && p.gamma >= 1.0) {
+                return Err(err(
+                    &format!("phases[{k}].gamma"),
+                    "a Tait exponent of at least 1 (air: 1.4)",
+                ));
+            }
+            if let Some(c) = p.c0 {
+                if !(c.is_finite() && c > 0.0) {
+                    return Err(err(&format!("phases[{k}].c0"), "a positive speed of sound in m/s"));
+                }
+            }
+        }
+        let m = &self.multi_fluid;
+        if !(m.background_pressure.is_finite() && m.background_pressure >= 0.0) {
+            return Err(err("multi_fluid.background_pressure", "a non-negative pressure in Pa"));
+        }
+        if !(m.interface_repulsion.is_finite() && m.interface_repulsion >= 0.0) {
+            return Err(err(
+                "multi_fluid.interface_repulsion",
+                "a non-negative ε_I (Grenier et al.: 0.01–0.1; 0 is off)",
+            ));
+        }
+        for (k, b) in self.blocks.iter().enumerate() {
+            let (BlockSpec::Rectangle { phase, .. } | BlockSpec::Disc { phase, .. }) = b;
+            if let Err(expected) = self.phase_index(phase.as_deref()) {
+                return Err(err(&format!("blocks[{k}].phase"), &expected));
+            }
+        }
+        Ok(())
+    }
+
     fn check(&self, file: &str) -> Result<(), InputError> {
         let err = |field: &str, expected: &str| InputError::field(file, field, expected);
         let d = self.dimension;
@@ -552,6 +706,7 @@ impl CaseFile {
                 return Err(err(&field, &expected));
             }
         }
+        self.check_phases(file)?;
         if self.blocks.is_empty() {
             return Err(err("blocks", "at least one fluid block"));
         }
@@ -578,6 +733,7 @@ impl CaseFile {
                 BlockSpec::Disc {
                     centre,
                     radius,
+                    inner_radius,
                     velocity,
                     velocity_gradient,
                     ..
@@ -586,6 +742,12 @@ impl CaseFile {
                         return Err(err(
                             &format!("blocks[{k}]"),
                             "a 2-component `centre` and a positive `radius` (m)",
+                        ));
+                    }
+                    if !(inner_radius.is_finite() && *inner_radius >= 0.0 && inner_radius < radius) {
+                        return Err(err(
+                            &format!("blocks[{k}].inner_radius"),
+                            "a non-negative inner radius below `radius` (m)",
                         ));
                     }
                     if !inside(centre, *radius) {

@@ -116,7 +116,7 @@ struct Sampler {
 
 fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
     sim.refresh();
-    let e = diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force);
+    let e = sim.energies();
     let (_, m2) = diagnostics::moments(&sim.fluid);
     let mut row = vec![
         sim.time,
@@ -173,7 +173,7 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
 pub fn write_snapshot(sim: &Simulation<2>, path: &Path) -> std::io::Result<()> {
     let f = &sim.fluid;
     let pts: Vec<[f64; 3]> = f.pos.iter().map(|p| [p.x, p.y, 0.0]).collect();
-    let p: Vec<f64> = f.rho.iter().map(|&r| sim.cfg.eos.pressure(r)).collect();
+    let p = sim.state_pressures();
     vtk::write_vtp(
         path,
         &pts,
@@ -183,6 +183,7 @@ pub fn write_snapshot(sim: &Simulation<2>, path: &Path) -> std::io::Result<()> {
             vtk::PointData::Scalar("density", f.rho.clone()),
             vtk::PointData::Scalar("id", f.id.iter().map(|&i| i as f64).collect()),
             vtk::PointData::Scalar("initial_depth", f.tag.clone()),
+            vtk::PointData::Scalar("phase", f.phase.iter().map(|&k| k as f64).collect()),
         ],
     )
 }
@@ -303,7 +304,7 @@ pub fn run(case: &CaseFile, opts: &RunOptions) -> anyhow::Result<RunResult> {
     let dx = sim.cfg.dx;
     let g = case.gravity_magnitude();
     let l = case.scales.length;
-    let e_init = diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force);
+    let e_init = sim.energies();
     let mass = sim.fluid.total_mass();
     let has_gravity = matches!(case.body_force, super::case_file::BodyForceSpec::Gravity { .. });
     let t_scale = (l / g).sqrt();

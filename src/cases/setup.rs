@@ -2,6 +2,7 @@
 //! concentric rings (discs), initial pressure and density, walls as ghost layers.
 
 use super::case_file::{BlockSpec, BodyForceSpec, CaseFile, PressureSpec};
+use crate::sph::multi_fluid::{equal_stiffness_sound_speed, MultiFluid, Phase};
 use crate::sph::{
     body_force::BodyForce,
     boundary::{Boundary, RigidMotion},
@@ -45,6 +46,7 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
         kind: case.fluid.eos,
         rho0: case.fluid.rho0,
         c0,
+        gamma: crate::sph::eos::TAIT_GAMMA_WATER,
     };
     cfg.viscosity = n.viscosity;
     cfg.diffusion = n.density_diffusion;
@@ -56,11 +58,46 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     cfg.ghost_interpolation = n.ghost_interpolation;
     cfg.kernel_table = n.kernel_table;
     cfg.shifting = n.shifting;
+    cfg.multi_fluid = multi_fluid(case, &cfg.eos);
     cfg
 }
 
-/// The fluid particles of a case at spacing `dx`.
-pub fn fluid(case: &CaseFile, dx: f64, eos: &Eos, body: &BodyForce<2>) -> Fluid<2> {
+/// The phases of a case with `[[phases]]` (`None` without): `[fluid]` first, then the others, each light
+/// phase's sound speed by the equal-stiffness rule unless given.
+fn multi_fluid(case: &CaseFile, water: &Eos) -> Option<MultiFluid> {
+    if case.phases.is_empty() && !case.multi_fluid.with_one_phase {
+        return None;
+    }
+    let mut phases = vec![Phase {
+        name: case.fluid.name.clone(),
+        eos: *water,
+    }];
+    for p in &case.phases {
+        let mut eos = Eos {
+            kind: p.eos,
+            rho0: p.rho0,
+            c0: 0.0,
+            gamma: p.gamma,
+        };
+        eos.c0 = p.c0.unwrap_or_else(|| equal_stiffness_sound_speed(water, &eos));
+        phases.push(Phase {
+            name: p.name.clone(),
+            eos,
+        });
+    }
+    let m = &case.multi_fluid;
+    Some(MultiFluid {
+        phases,
+        background_pressure: m.background_pressure,
+        interface_repulsion: m.interface_repulsion,
+        diffusion: m.diffusion,
+        density: m.density,
+    })
+}
+
+/// The fluid particles of a case at spacing `dx`; `phase_eos[k]` is phase k's state equation (one entry for a
+/// single phase).
+pub fn fluid(case: &CaseFile, dx: f64, phase_eos: &[Eos], body: &BodyForce<2>) -> Fluid<2> {
     let mut f = Fluid::default();
     let g_down = match body {
         BodyForce::Uniform(g) => -g.y,
@@ -71,10 +108,15 @@ pub fn fluid(case: &CaseFile, dx: f64, eos: &Eos, body: &BodyForce<2>) -> Fluid<
             BlockSpec::Rectangle {
                 min,
                 max,
+                phase,
                 pressure,
                 velocity,
                 velocity_gradient,
             } => {
+                let k = case
+                    .phase_index(phase.as_deref())
+                    .expect("checked when the case was read");
+                let eos = &phase_eos[k as usize];
                 let (lo, hi) = (v2(min), v2(max));
                 let nx = ((hi.x - lo.x) / dx).round() as usize;
                 let ny = ((hi.y - lo.y) / dx).round() as usize;
@@ -84,44 +126,59 @@ pub fn fluid(case: &CaseFile, dx: f64, eos: &Eos, body: &BodyForce<2>) -> Fluid<
                         let x = lo + V2::new((i as f64 + 0.5) * dx, (j as f64 + 0.5) * dx);
                         let p = match pressure {
                             PressureSpec::Zero => 0.0,
-                            PressureSpec::Hydrostatic => eos.rho0 * g_down * (hi.y - x.y),
-                            PressureSpec::Paraboloid { p_centre } => {
-                                p_centre * (1.0 - (x - centre).norm_squared() / (0.5 * (hi - lo)).norm_squared())
+                            PressureSpec::Hydrostatic { top } => top + eos.rho0 * g_down * (hi.y - x.y),
+                            PressureSpec::Paraboloid { p_centre, p_rim } => {
+                                p_rim
+                                    + (p_centre - p_rim)
+                                        * (1.0 - (x - centre).norm_squared() / (0.5 * (hi - lo)).norm_squared())
                             }
                         };
                         let u = velocity_at(velocity, velocity_gradient, &x, &centre);
                         let rho = eos.density(p);
                         f.push(x, u, rho, rho * dx * dx, hi.y - x.y);
+                        *f.phase.last_mut().expect("just pushed") = k;
                     }
                 }
             }
             BlockSpec::Disc {
                 centre,
                 radius,
+                inner_radius,
+                phase,
                 pressure,
                 velocity,
                 velocity_gradient,
             } => {
+                let kp = case
+                    .phase_index(phase.as_deref())
+                    .expect("checked when the case was read");
+                let eos = &phase_eos[kp as usize];
                 let c = v2(centre);
-                let nr = (radius / dx).round().max(1.0) as usize;
-                let dr = radius / nr as f64;
+                let nr = ((radius - inner_radius) / dx).round().max(1.0) as usize;
+                let dr = (radius - inner_radius) / nr as f64;
                 for k in 0..nr {
-                    let r = (k as f64 + 0.5) * dr;
+                    let r = inner_radius + (k as f64 + 0.5) * dr;
                     let n = ((2.0 * std::f64::consts::PI * r / dr).round() as usize).max(1);
                     // Area of the ring shared equally by its n particles.
                     let area = std::f64::consts::PI * ((r + 0.5 * dr).powi(2) - (r - 0.5 * dr).powi(2)) / n as f64;
-                    let phase = if k % 2 == 0 { 0.0 } else { 0.5 };
+                    // Rings alternate their angular offset, counted from the centre (an annulus continues the
+                    // disc inside it).
+                    let ring = (inner_radius / dr).round() as usize + k;
+                    let offset = if ring.is_multiple_of(2) { 0.0 } else { 0.5 };
                     for m in 0..n {
-                        let th = 2.0 * std::f64::consts::PI * (m as f64 + phase) / n as f64;
+                        let th = 2.0 * std::f64::consts::PI * (m as f64 + offset) / n as f64;
                         let x = c + V2::new(r * th.cos(), r * th.sin());
                         let p = match pressure {
                             PressureSpec::Zero => 0.0,
-                            PressureSpec::Hydrostatic => 0.0,
-                            PressureSpec::Paraboloid { p_centre } => p_centre * (1.0 - (r / radius).powi(2)),
+                            PressureSpec::Hydrostatic { .. } => 0.0,
+                            PressureSpec::Paraboloid { p_centre, p_rim } => {
+                                p_rim + (p_centre - p_rim) * (1.0 - (r / radius).powi(2))
+                            }
                         };
                         let u = velocity_at(velocity, velocity_gradient, &x, &c);
                         let rho = eos.density(p);
                         f.push(x, u, rho, rho * area, radius - r);
+                        *f.phase.last_mut().expect("just pushed") = kp;
                     }
                 }
             }
@@ -247,7 +304,8 @@ pub fn build(case: &CaseFile, res: Option<f64>) -> anyhow::Result<Simulation<2>>
     let cfg = solver_config(case, dx);
     let support = cfg.kernel.support_over_h() * cfg.h;
     check_size(case, dx, support)?;
-    let fl = fluid(case, dx, &cfg.eos, &cfg.body_force);
+    let phase_eos = cfg.multi_fluid.as_ref().map_or(vec![cfg.eos], |m| m.eoses());
+    let fl = fluid(case, dx, &phase_eos, &cfg.body_force);
     let laws = super::wall_motion::laws(case)?;
     let mut sim = Simulation::new(cfg, fl, walls(case, dx, support, &laws));
     sim.set_sensors(wall_sensors(case, dx, &laws)?);

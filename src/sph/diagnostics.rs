@@ -21,13 +21,14 @@ impl Energies {
     }
 }
 
-pub fn energies<const D: usize>(fluid: &Fluid<D>, eos: &Eos, body: &BodyForce<D>) -> Energies {
+/// The energies of `fluid`; `eos[k]` is the state equation of phase k (one entry for a single phase).
+pub fn energies<const D: usize>(fluid: &Fluid<D>, eos: &[Eos], body: &BodyForce<D>) -> Energies {
     let mut e = Energies::default();
     for i in 0..fluid.len() {
         let m = fluid.mass[i];
         e.kinetic += 0.5 * m * fluid.vel[i].norm_squared();
         e.potential += m * body.potential(&fluid.pos[i]);
-        e.elastic += m * eos.elastic_energy(fluid.rho[i]);
+        e.elastic += m * eos[fluid.phase[i] as usize].elastic_energy(fluid.rho[i]);
     }
     e
 }

@@ -9,27 +9,31 @@ pub enum EosKind {
     /// p = c0² (ρ − ρ0), thesis eq. (3.54): the default, since c varies by < 1 % at Ma ≤ 0.1.
     #[default]
     Linear,
-    /// Tait: p = (ρ0 c0²/γ) [(ρ/ρ0)^γ − 1], γ = 7 (thesis eq. 3.49).
+    /// Tait: p = (ρ0 c0²/γ) [(ρ/ρ0)^γ − 1] (thesis eq. 3.49), γ = [`Eos::gamma`] (7 for water).
     Tait,
 }
 
 /// A state equation with its constants.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Eos {
     pub kind: EosKind,
     /// Reference density ρ0 (kg/m³), the density at p = 0.
     pub rho0: f64,
     /// Speed of sound at ρ0 (m/s).
     pub c0: f64,
+    /// The Tait exponent γ, dimensionless (ignored by the linear law): 7 for water (thesis eq. 3.49), 1.4 for
+    /// air as a multi-fluid phase (Hammani et al., eq. 23; Grenier et al. §4.2).
+    pub gamma: f64,
 }
 
-const TAIT_GAMMA: f64 = 7.0;
+/// γ of the Tait law for water (thesis eq. 3.49).
+pub const TAIT_GAMMA_WATER: f64 = 7.0;
 
 impl Eos {
     pub fn pressure(&self, rho: f64) -> f64 {
         match self.kind {
             EosKind::Linear => self.c0 * self.c0 * (rho - self.rho0),
-            EosKind::Tait => self.rho0 * self.c0 * self.c0 / TAIT_GAMMA * ((rho / self.rho0).powf(TAIT_GAMMA) - 1.0),
+            EosKind::Tait => self.rho0 * self.c0 * self.c0 / self.gamma * ((rho / self.rho0).powf(self.gamma) - 1.0),
         }
     }
 
@@ -38,8 +42,8 @@ impl Eos {
         match self.kind {
             EosKind::Linear => self.rho0 + p / (self.c0 * self.c0),
             EosKind::Tait => {
-                let base = (1.0 + TAIT_GAMMA * p / (self.rho0 * self.c0 * self.c0)).max(1e-6);
-                self.rho0 * base.powf(1.0 / TAIT_GAMMA)
+                let base = (1.0 + self.gamma * p / (self.rho0 * self.c0 * self.c0)).max(1e-6);
+                self.rho0 * base.powf(1.0 / self.gamma)
             }
         }
     }
@@ -48,7 +52,7 @@ impl Eos {
     pub fn sound_speed(&self, rho: f64) -> f64 {
         match self.kind {
             EosKind::Linear => self.c0,
-            EosKind::Tait => self.c0 * (rho / self.rho0).powf(0.5 * (TAIT_GAMMA - 1.0)),
+            EosKind::Tait => self.c0 * (rho / self.rho0).powf(0.5 * (self.gamma - 1.0)),
         }
     }
 
@@ -64,8 +68,8 @@ impl Eos {
         match self.kind {
             EosKind::Linear => c2 * ((rho / self.rho0).ln() + self.rho0 / rho - 1.0),
             EosKind::Tait => {
-                let b = self.rho0 * c2 / TAIT_GAMMA;
-                b * (((rho / self.rho0).powf(TAIT_GAMMA - 1.0) - 1.0) / (self.rho0 * (TAIT_GAMMA - 1.0)) + 1.0 / rho
+                let b = self.rho0 * c2 / self.gamma;
+                b * (((rho / self.rho0).powf(self.gamma - 1.0) - 1.0) / (self.rho0 * (self.gamma - 1.0)) + 1.0 / rho
                     - 1.0 / self.rho0)
             }
         }
@@ -83,6 +87,7 @@ mod tests {
                 kind,
                 rho0: 1000.0,
                 c0: 30.0,
+                gamma: TAIT_GAMMA_WATER,
             };
             for rho in [990.0, 1000.0, 1013.0] {
                 assert!((e.density(e.pressure(rho)) - rho).abs() < 1e-9);
@@ -97,6 +102,7 @@ mod tests {
                 kind,
                 rho0: 1000.0,
                 c0: 30.0,
+                gamma: TAIT_GAMMA_WATER,
             };
             let (a, b, n) = (1000.0, 1020.0, 2000);
             let d = (b - a) / n as f64;

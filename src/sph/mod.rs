@@ -13,6 +13,7 @@ pub mod integrator;
 pub mod kernel;
 pub mod kernel_table;
 pub mod mls;
+pub mod multi_fluid;
 pub mod neighbours;
 pub mod packing;
 pub mod particle_shifting;

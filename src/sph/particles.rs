@@ -22,6 +22,9 @@ pub struct Fluid<const D: usize> {
     pub id: Vec<u32>,
     /// A free scalar carried with the particle (the built-in cases store the initial depth), for colouring.
     pub tag: Vec<f64>,
+    /// The phase of each particle, an index into [`crate::sph::multi_fluid::MultiFluid::phases`]; all 0 in a
+    /// single-phase scene.
+    pub phase: Vec<u8>,
 }
 
 impl<const D: usize> Fluid<D> {
@@ -40,6 +43,7 @@ impl<const D: usize> Fluid<D> {
         self.rho.push(rho);
         self.mass.push(mass);
         self.tag.push(tag);
+        self.phase.push(0);
     }
 
     /// Re-orders every field so that new index k holds old index `order[k]`.
@@ -54,6 +58,7 @@ impl<const D: usize> Fluid<D> {
         apply(&mut self.mass, order);
         apply(&mut self.id, order);
         apply(&mut self.tag, order);
+        apply(&mut self.phase, order);
     }
 
     /// Total mass.

@@ -398,12 +398,19 @@ pub fn ghost_layers_moving(
         .filter(|&k| is_corner(&normals, k))
         .map(|k| points[k])
         .collect();
+    // A closed polyline (last point on the first, e.g. a lidded tank started in the middle of a side) has its
+    // two ends meet: both end chains sample the meeting point, which must be one ghost, not two.
+    let closed = (points[0] - points[points.len() - 1]).norm() < 1e-9 * ds;
     let mut k = 0;
     let mut samples = vec![];
     while (k as f64 + 0.5) * ds < support {
         let d = (k as f64 + 0.5) * ds;
         let q = offset_polyline(points, &normals, d);
-        samples.extend(sample_offset(&q, &normals, ds, anchor_start));
+        let mut layer = sample_offset(&q, &normals, ds, anchor_start);
+        if closed && layer.len() > 1 && (layer[0] - layer[layer.len() - 1]).norm() < 1e-6 * ds {
+            layer.pop();
+        }
+        samples.extend(layer);
         k += 1;
     }
     use rayon::prelude::*;

@@ -29,6 +29,7 @@ use super::integrator::Integrator;
 use super::kernel::{Kernel, KernelKind};
 use super::kernel_table::{GradientFactor, GradientTable};
 use super::mls::{mls_fit, MlsFit};
+use super::multi_fluid::{self, MultiFluid, ShepardDensity, StateDensity};
 use super::neighbours::CellList;
 use super::particle_shifting::{self, ParticleShifting};
 use super::particles::Fluid;
@@ -71,6 +72,10 @@ pub struct SolverConfig<const D: usize> {
     pub kernel_table: bool,
     /// Particle shifting after each step; default none (the thesis's δ-SPH).
     pub shifting: ParticleShifting,
+    /// Several phases by the multi-fluid δ-SPH of Hammani et al. ([`super::multi_fluid`]); `None`, the default,
+    /// is the single-phase δ-SPH with `eos`, which takes none of that path. With phases, `eos` should be the
+    /// first phase's (the free-surface, sensor and energy diagnostics read it).
+    pub multi_fluid: Option<MultiFluid>,
 }
 
 /// Interpolation of the fluid at the ghosts' mirror points.
@@ -97,6 +102,7 @@ impl<const D: usize> SolverConfig<D> {
                 kind: Default::default(),
                 rho0,
                 c0,
+                gamma: super::eos::TAIT_GAMMA_WATER,
             },
             viscosity: Viscosity::default(),
             diffusion: DensityDiffusion::DeltaSph,
@@ -109,6 +115,7 @@ impl<const D: usize> SolverConfig<D> {
             ghost_interpolation: GhostInterpolation::Mls,
             kernel_table: true,
             shifting: ParticleShifting::None,
+            multi_fluid: None,
         }
     }
 }
@@ -128,13 +135,16 @@ pub struct GhostState<const D: usize> {
     pub rho: Vec<f64>,
     pub p: Vec<f64>,
     pub grad_rho: Vec<SVector<f64, D>>,
+    /// The phase each ghost takes from the fluid particle nearest its mirror point (multi-fluid only; empty
+    /// otherwise).
+    pub phase: Vec<u8>,
     /// Volume each ghost takes part with: its lattice volume, or 0 when no fluid particle is within the
     /// kernel support of its mirror point (the mirror image of empty space is empty).
     pub volume: Vec<f64>,
 }
 
-/// (velocity, density, pressure, density gradient, active volume) assigned to one ghost.
-type GhostValues<const D: usize> = (SVector<f64, D>, f64, f64, SVector<f64, D>, f64);
+/// (velocity, density, pressure, density gradient, active volume, phase) assigned to one ghost.
+type GhostValues<const D: usize> = (SVector<f64, D>, f64, f64, SVector<f64, D>, f64, u8);
 
 /// Why a run stopped early.
 #[derive(Clone, Debug, PartialEq)]
@@ -217,6 +227,19 @@ struct Rates<const D: usize> {
     max_accel: f64,
 }
 
+impl<const D: usize> Rates<D> {
+    /// From a gather's (dρ/dt, du/dt, signal speed) per particle. max is exact and order-free, so the parallel
+    /// reductions give the same bits for any thread count.
+    fn from_gather(out: Vec<(f64, SVector<f64, D>, f64)>) -> Self {
+        Rates {
+            drho: out.par_iter().map(|o| o.0).collect(),
+            dvel: out.par_iter().map(|o| o.1).collect(),
+            max_signal: out.par_iter().map(|o| o.2).reduce(|| 0.0, f64::max),
+            max_accel: out.par_iter().map(|o| o.1.norm()).reduce(|| 0.0, f64::max),
+        }
+    }
+}
+
 /// Per-step record.
 #[derive(Clone, Copy, Debug)]
 pub struct StepReport {
@@ -273,6 +296,9 @@ pub struct Simulation<const D: usize> {
     pressure: Vec<f64>,
     /// Each fluid particle's volume m/ρ at the current stage (m^D), computed once per stage.
     volume: Vec<f64>,
+    /// The density the state equation reads at the current stage: the same-phase Shepard density with
+    /// several phases ([`super::multi_fluid`]); empty with one phase, where it is the integrated ρ itself.
+    rho_eos: Vec<f64>,
     grad_rho: Vec<SVector<f64, D>>,
     /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
     neighbours: Vec<Vec<u32>>,
@@ -309,6 +335,7 @@ impl<const D: usize> Simulation<D> {
             all_pos: vec![],
             pressure: vec![],
             volume: vec![],
+            rho_eos: vec![],
             grad_rho: vec![],
             neighbours: vec![],
             ghosts_static: false,
@@ -376,6 +403,31 @@ impl<const D: usize> Simulation<D> {
         }
     }
 
+    /// The state equation of each phase, indexed by a particle's `phase` (the one `cfg.eos` with one phase).
+    pub fn phase_eos(&self) -> Vec<Eos> {
+        match &self.cfg.multi_fluid {
+            Some(mf) => mf.eoses(),
+            None => vec![self.cfg.eos],
+        }
+    }
+
+    /// Kinetic, potential and elastic energy of the fluid, each particle's elastic energy by its phase's law.
+    pub fn energies(&self) -> super::diagnostics::Energies {
+        super::diagnostics::energies(&self.fluid, &self.phase_eos(), &self.cfg.body_force)
+    }
+
+    /// Each particle's pressure from its integrated density and its phase's law (Pa): what outputs show
+    /// between evaluations (with several phases the evaluation's own pressure reads the Shepard density).
+    pub fn state_pressures(&self) -> Vec<f64> {
+        let eos = self.phase_eos();
+        let f = &self.fluid;
+        f.rho
+            .iter()
+            .zip(&f.phase)
+            .map(|(&r, &k)| eos[k as usize].pressure(r))
+            .collect()
+    }
+
     /// Pressure of the fluid particles at the last evaluation (Pa).
     pub fn pressure(&self) -> &[f64] {
         &self.pressure
@@ -394,7 +446,14 @@ impl<const D: usize> Simulation<D> {
         self.all_pos.extend_from_slice(&self.ghosts.geom.pos);
         self.cells = CellList::build(&self.all_pos, self.kernel.support);
         let eos = self.cfg.eos;
-        self.pressure = rho.par_iter().map(|&r| eos.pressure(r)).collect();
+        let multi = self.cfg.multi_fluid.as_ref();
+        let phase = &self.fluid.phase;
+        self.pressure = match multi {
+            None => rho.par_iter().map(|&r| eos.pressure(r)).collect(),
+            // Provisional: from the integrated density, for the ghosts' mirroring; replaced below by the
+            // pressure of the Shepard density.
+            Some(mf) => rho.par_iter().zip(phase).map(|(&r, &k)| mf.pressure(k, r)).collect(),
+        };
         self.volume = self.fluid.mass.par_iter().zip(rho).map(|(m, r)| m / r).collect();
         self.timings.neighbour_search += clock.elapsed().as_secs_f64();
         let clock = Instant::now();
@@ -423,8 +482,22 @@ impl<const D: usize> Simulation<D> {
                     let wall_vel = geom.wall_vel[g];
                     if nb.is_empty() {
                         // The mirror image of empty space is empty: this ghost takes no part.
-                        return (wall_vel, eos.rho0, 0.0, SVector::zeros(), 0.0);
+                        return (wall_vel, eos.rho0, 0.0, SVector::zeros(), 0.0, 0);
                     }
+                    // With several phases the ghost is of the phase of the particle nearest its mirror point (an
+                    // image: of its particle's), valued from that phase only.
+                    let (eos, ghost_phase) = match multi {
+                        None => (eos, 0),
+                        Some(mf) => {
+                            let k = match g.checked_sub(n_fixed) {
+                                Some(k) => phase[image_source[k]],
+                                None => phase[nearest(nb)],
+                            };
+                            nb.retain(|n| phase[n.0] == k);
+                            (*mf.eos(k), k)
+                        }
+                    };
+
                     let fit = if shepard { MlsFit::Empty } else { mls_fit(kernel.h, nb) };
                     let fit = match fit {
                         MlsFit::Empty => {
@@ -455,7 +528,7 @@ impl<const D: usize> Simulation<D> {
                         let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
                         let p =
                             ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
-                        return (u, eos.density(p), p, grad_g, volume[j]);
+                        return (u, eos.density(p), p, grad_g, volume[j], ghost_phase);
                     }
                     let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
                     let u_g = match geom.mirror[g] {
@@ -463,7 +536,7 @@ impl<const D: usize> Simulation<D> {
                         Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
                         Mirror::Axes(mask) => ghost_conditions::axes_mirror_velocity(&u_i, &wall_vel, mask),
                     };
-                    (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g])
+                    (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g], ghost_phase)
                 },
             )
             .collect();
@@ -473,6 +546,32 @@ impl<const D: usize> Simulation<D> {
         gs.p = values.par_iter().map(|v| v.2).collect();
         gs.grad_rho = values.par_iter().map(|v| v.3).collect();
         gs.volume = values.par_iter().map(|v| v.4).collect();
+        match multi {
+            Some(mf) => {
+                gs.phase = values.par_iter().map(|v| v.5).collect();
+                // The provisional pressures are final when the state equation reads the integrated density.
+                let (rho_eos, pressure) = if mf.density == StateDensity::Integrated {
+                    (rho.to_vec(), std::mem::take(&mut self.pressure))
+                } else {
+                    shepard_pressures(
+                        mf,
+                        &self.kernel,
+                        &self.cells,
+                        &self.all_pos,
+                        &self.fluid,
+                        rho,
+                        &self.volume,
+                        gs,
+                    )
+                };
+                self.rho_eos = rho_eos;
+                self.pressure = pressure;
+            }
+            None => {
+                gs.phase.clear();
+                self.rho_eos.clear();
+            }
+        }
         // An image's geometric volume is its particle's (the sensors' wet fraction counts it as solid side).
         for g in gs.n_fixed..gs.geom.len() {
             gs.geom.volume[g] = gs.volume[g];
@@ -483,6 +582,8 @@ impl<const D: usize> Simulation<D> {
     /// Stages 4–5: the rates of change of ρ and u.
     fn rates(&mut self, t: f64, pos: &[SVector<f64, D>], vel: &[SVector<f64, D>], rho: &[f64]) -> Rates<D> {
         self.prepare(t, pos, vel, rho);
+        // The integrated density (with several phases `rho` below is the state equation's, which may differ).
+        let rho_tilde = rho;
         let nf = pos.len();
         let kernel = self.kernel;
         let cells = &self.cells;
@@ -501,6 +602,9 @@ impl<const D: usize> Simulation<D> {
             None => GradientFactor::Exact(kernel),
         };
         self.neighbours.resize_with(nf, Vec::new);
+        // With several phases the gradient is of the Shepard density, over the particle's own phase.
+        let phases = cfg.multi_fluid.as_ref().map(|_| (&self.fluid.phase, &gs.phase));
+        let rho: &[f64] = if phases.is_some() { &self.rho_eos } else { rho };
         self.grad_rho = self
             .neighbours
             .par_iter_mut()
@@ -513,6 +617,11 @@ impl<const D: usize> Simulation<D> {
                         return;
                     }
                     list.push(j as u32);
+                    if let Some((fp, gp)) = phases {
+                        if fp[i] != if j < nf { fp[j] } else { gp[j - nf] } {
+                            return;
+                        }
+                    }
                     if need_grad {
                         let gw = rij * gf.at(r2);
                         let (rho_j, v_j) = if j < nf {
@@ -532,6 +641,26 @@ impl<const D: usize> Simulation<D> {
             .collect();
         self.timings.density_gradient += clock.elapsed().as_secs_f64();
         let clock = Instant::now();
+        if let Some(mf) = &cfg.multi_fluid {
+            let stage = multi_fluid::Stage {
+                pos,
+                vel,
+                rho_tilde,
+                rho: &self.rho_eos,
+                pressure: &self.pressure,
+                volume,
+                grad_rho: &self.grad_rho,
+                phase: &self.fluid.phase,
+                neighbours: &self.neighbours,
+                all_pos,
+                ghosts: gs,
+                gradient: gf,
+                h,
+            };
+            let rates = Rates::from_gather(multi_fluid::rates(mf, cfg, &stage));
+            self.timings.main_loop += clock.elapsed().as_secs_f64();
+            return rates;
+        }
         let grad_rho = &self.grad_rho;
         let neighbours = &self.neighbours;
         let pressure = &self.pressure;
@@ -576,13 +705,7 @@ impl<const D: usize> Simulation<D> {
                 (drho, dvel, signal)
             })
             .collect();
-        // max is exact and order-free, so the parallel reductions give the same bits for any thread count.
-        let rates = Rates {
-            drho: out.par_iter().map(|o| o.0).collect(),
-            dvel: out.par_iter().map(|o| o.1).collect(),
-            max_signal: out.par_iter().map(|o| o.2).reduce(|| 0.0, f64::max),
-            max_accel: out.par_iter().map(|o| o.1.norm()).reduce(|| 0.0, f64::max),
-        };
+        let rates = Rates::from_gather(out);
         self.timings.main_loop += clock.elapsed().as_secs_f64();
         rates
     }
@@ -909,4 +1032,59 @@ impl<const D: usize> Simulation<D> {
             });
         (w > 0.0).then(|| s / w)
     }
+}
+
+/// The fluid particle nearest to the point the neighbours `nb` were gathered around (the first of equals).
+fn nearest<const D: usize>(nb: &[(usize, SVector<f64, D>, f64)]) -> usize {
+    let mut best = (f64::INFINITY, 0);
+    for (j, r, _) in nb {
+        let d = r.norm_squared();
+        if d < best.0 {
+            best = (d, *j);
+        }
+    }
+    best.1
+}
+
+/// The multi-fluid density and pressure of every fluid particle ([`super::multi_fluid`]): the same-phase
+/// Shepard density over the fluid and the ghosts of the phase (ρ_j = ρ̃_j of the integrated density, V_j =
+/// m_j/ρ̃_j; a ghost with its mirrored density and lattice volume), and the phase's state equation of it.
+#[allow(clippy::too_many_arguments)]
+fn shepard_pressures<const D: usize>(
+    mf: &MultiFluid,
+    kernel: &Kernel<D>,
+    cells: &CellList<D>,
+    all_pos: &[SVector<f64, D>],
+    fluid: &Fluid<D>,
+    rho: &[f64],
+    volume: &[f64],
+    gs: &GhostState<D>,
+) -> (Vec<f64>, Vec<f64>) {
+    let nf = rho.len();
+    let rho_s: Vec<f64> = (0..nf)
+        .into_par_iter()
+        .map(|i| {
+            let k = fluid.phase[i];
+            let mut acc = ShepardDensity::default();
+            cells.for_each_within(all_pos, &all_pos[i], kernel.support, |j, _, r| {
+                if j < nf {
+                    if fluid.phase[j] == k {
+                        acc.add(kernel.w(r), fluid.mass[j], volume[j]);
+                    }
+                } else {
+                    let g = j - nf;
+                    if gs.phase[g] == k && gs.volume[g] > 0.0 {
+                        acc.add(kernel.w(r), gs.rho[g] * gs.volume[g], gs.volume[g]);
+                    }
+                }
+            });
+            acc.density(rho[i])
+        })
+        .collect();
+    let p = rho_s
+        .par_iter()
+        .zip(&fluid.phase)
+        .map(|(&r, &k)| mf.pressure(k, r))
+        .collect();
+    (rho_s, p)
 }

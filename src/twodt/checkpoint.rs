@@ -254,6 +254,8 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
             mass: a("mass")?.to_vec(),
             id: a("id")?.iter().map(|&i| i as u32).collect(),
             tag: a("tag")?.to_vec(),
+            // The 2D+t run is single-phase.
+            phase: vec![0; a("rho")?.len()],
         },
         time: h.time,
         steps: h.steps,

@@ -224,8 +224,7 @@ impl Observer<TwoDtRun> for Outputs<'_> {
         let (scene, p) = (&run.scene, &mut run.p);
         let g = &scene.geom;
         p.next_output += self.cfg.output_dx;
-        let ke =
-            crate::sph::diagnostics::energies(&scene.sim.fluid, &scene.sim.cfg.eos, &scene.sim.cfg.body_force).kinetic;
+        let ke = scene.sim.energies().kinetic;
         p.series.push(vec![
             x,
             scene.sim.time - scene.profile.t_start,

@@ -90,9 +90,7 @@ impl Scene {
     /// reported as what the settling left; regression test `settling_energy_is_measured_before_the_ship_starts`).
     pub fn settle(&mut self) -> anyhow::Result<f64> {
         use crate::driver::{drive, Flow, Outcome, Watch};
-        let kinetic = |sim: &Simulation<2>| {
-            crate::sph::diagnostics::energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic
-        };
+        let kinetic = |sim: &Simulation<2>| sim.energies().kinetic;
         let t_start = self.profile.t_start;
         let mut ke = kinetic(&self.sim);
         let steps0 = self.sim.steps;

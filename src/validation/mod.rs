@@ -15,6 +15,7 @@ mod drops;
 mod hydrostatic;
 mod jets;
 mod martin_moyce;
+mod multi_fluid;
 mod plots;
 pub mod references;
 pub mod sloshing;
@@ -28,6 +29,7 @@ pub use drops::{elliptic_drop, oscillating_drop};
 pub use hydrostatic::{hydrostatic, near_surface_pressure_error};
 pub use jets::{jet_floor, jet_plate, jet_wall, taylor_jet_cp, JET_PLATE_CP_TOLERANCE, JET_WALL_STEADY_FROM};
 pub use martin_moyce::martin_moyce;
+pub use multi_fluid::{two_layer, two_phase_drop, INTERFACE_GAP_LIMIT, TWO_LAYER_PRESSURE_TOLERANCE};
 pub use plots::plots;
 
 /// One validated quantity.
@@ -86,6 +88,8 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "jet-wall" | "jet-plate" | "jet-floor" => Some(20.0),
         "sloshing-deep" => Some(50.0),
         "sloshing-shallow" => Some(30.0),
+        "two-layer" => Some(20.0),
+        "two-phase-drop-2" | "two-phase-drop-100" => Some(40.0),
         TANK_3D => Some(tank_3d::FULL_RESOLUTION),
         _ => None,
     }
@@ -106,6 +110,7 @@ pub fn builtin_experiment(case: &crate::cases::CaseFile) -> Option<&'static str>
     let equal = same(&case.domain, &builtin.domain)
         && same(&case.blocks, &builtin.blocks)
         && same(&case.body_force, &builtin.body_force)
+        && same(&case.phases, &builtin.phases)
         && same(&case.probes, &builtin.probes)
         && case.scales.length == builtin.scales.length
         && case.dimension == builtin.dimension;
@@ -144,6 +149,8 @@ fn builtin_checks(r: &RunResult) -> Option<Vec<Check>> {
         "jet-plate" => jet_plate(r),
         "jet-floor" => jet_floor(r),
         "sloshing-deep" | "sloshing-shallow" => sloshing::sloshing(r),
+        "two-layer" => two_layer(r, TWO_LAYER_PRESSURE_TOLERANCE),
+        "two-phase-drop-2" | "two-phase-drop-100" => two_phase_drop(r),
         _ => return None,
     })
 }

@@ -7,7 +7,6 @@ use super::Check;
 use crate::cases::box_tank::BoxTank;
 use crate::driver::progress::{Progress, Status};
 use crate::driver::{drive, Flow, Outcome, Watch};
-use crate::sph::diagnostics::energies;
 use crate::sph::polyline_wall::GhostKind;
 use crate::sph::solver::{BlowUp, Simulation};
 use nalgebra::Vector3;
@@ -115,7 +114,7 @@ pub fn tank_at_rest(res: f64, ghosts: GhostKind, progress: bool) -> anyhow::Resu
     Ok(Ok(TankAtRest {
         res,
         ghosts,
-        kinetic: energies(&sim.fluid, &sim.cfg.eos, &sim.cfg.body_force).kinetic / (m * G * H),
+        kinetic: sim.energies().kinetic / (m * G * H),
         wall_force: force / samples,
         bottom: bottom / samples * RHO0 * G / weight_per_area,
         gradient: (p_low - p_high) / (z_high - z_low) / (rho_mean * G),
