@@ -149,7 +149,7 @@ fn builtin_checks(r: &RunResult) -> Option<Vec<Check>> {
         "jet-plate" => jet_plate(r),
         "jet-floor" => jet_floor(r),
         "sloshing-deep" | "sloshing-shallow" => sloshing::sloshing(r),
-        "two-layer" => two_layer(r, TWO_LAYER_PRESSURE_TOLERANCE),
+        "two-layer" => two_layer(r, TWO_LAYER_PRESSURE_TOLERANCE, Some(TWO_LAYER_PRESSURE_TOLERANCE)),
         "two-phase-drop-2" | "two-phase-drop-100" => two_phase_drop(r),
         _ => return None,
     })
