@@ -239,6 +239,40 @@ fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
     assert!(!text.contains("read x_p, y_p and H_pj only"), "{text}");
 }
 
+/// Regression: the trends were read over every plunging case in the study file's order, so a finer case at a
+/// Froude number already present (athena-shifting's case 5) made "x_plunge grows with Fr" fail on cases that
+/// hold it. They are read per series of one configuration and spacing, in increasing Fr. Metrics put in by
+/// hand on three short runs.
+#[test]
+fn trends_are_read_per_spacing_in_increasing_froude_number() {
+    use bowwave::studies::collect::trends;
+    let (study, dir) = fresh_study(
+        "trend-series",
+        "froude = [0.64, 0.5, 0.5]\n[resolution]\ndx = [3e-3, 3e-3, 2.5e-3]\n[config]\nuntil = 0.01\n",
+    );
+    let out = dir.join("out");
+    runner::run_cases(&study, &serial_options(&out)).unwrap();
+    let mut records = runner::collect_finished(&study, &out);
+    assert_eq!(records.len(), 3);
+    for (r, x) in records.iter_mut().zip([0.47, 0.33, 0.30]) {
+        r.result.plunge = Some(bowwave::twodt::run::PlungeMetrics {
+            x_plunge_over_l: x,
+            y_plunge_over_l: x / 3.0,
+            ..Default::default()
+        });
+    }
+    let t = trends(&records);
+    assert!(t.iter().any(|l| l == "Fr = 0.500, 0.640"), "{t:?}");
+    assert!(
+        t.iter().any(|l| l == "x_plunge/L grows with Fr: holds (0.330, 0.470)"),
+        "{t:?}"
+    );
+    assert!(
+        !t.iter().any(|l| l.contains("0.300")),
+        "the finer case has no series of its own: {t:?}"
+    );
+}
+
 /// A convergence study: one Froude number at two spacings. Regression: the comparison paired each published
 /// row with the first case at its Froude number, so the finer case had no comparison rows, and the report
 /// tested the published trends over Fr on cases that all have the same Fr.

@@ -232,22 +232,82 @@ pub const RESOLVED_JET_PARTICLES: usize = 100;
 /// be checked (plunging cases at fewer than two Froude numbers, as in a convergence study of one; for the
 /// jet's own metrics, a jet of fewer than [`RESOLVED_JET_PARTICLES`] particles).
 pub fn trends(recs: &[CaseRecord]) -> Vec<String> {
-    let plunged: Vec<_> = recs
-        .iter()
-        .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, m)))
-        .collect();
-    let mut froude: Vec<f64> = plunged.iter().map(|p| p.0).collect();
-    froude.sort_by(f64::total_cmp);
-    froude.dedup();
-    if froude.len() < 2 {
+    let plunged: Vec<&CaseRecord> = recs.iter().filter(|r| r.result.plunge.is_some()).collect();
+    let groups = trend_groups(&plunged);
+    if groups.is_empty() {
+        let mut froude: Vec<f64> = plunged.iter().map(|r| r.result.fr).collect();
+        froude.sort_by(f64::total_cmp);
+        froude.dedup();
         return vec![format!(
-            "{} plunging case(s) at {} Froude number(s): the trends of the thesis (x_plunge and y_plunge grow with \
-             Fr, Γ/(UD) grows up to Fr ≈ 0.5 then falls, I_OG/S² falls with Fr, α_G rises from about 40° to 55°) \
-             cannot be checked",
+            "{} plunging case(s) at {} Froude number(s) of the same configuration and spacing: the trends of the \
+             thesis (x_plunge and y_plunge grow with Fr, Γ/(UD) grows up to Fr ≈ 0.5 then falls, I_OG/S² falls \
+             with Fr, α_G rises from about 40° to 55°) cannot be checked",
             plunged.len(),
             froude.len()
         )];
     }
+    let several = groups.len() > 1;
+    groups.iter().flat_map(|g| group_trends(g, several)).collect()
+}
+
+/// The plunging cases split into series a trend can be read on: the same configuration apart from the Froude
+/// number, the spacing and the stop rule, each Froude number once (where one repeats, the series splits by
+/// spacing), in increasing Fr; only series of two Froude numbers or more. Regression: the trends were read
+/// over every plunging case in the study file's order, so a finer case at a Froude number already present
+/// made "x_plunge grows with Fr" fail on cases that hold it (`studies/results/athena-shifting/`).
+fn trend_groups<'a>(plunged: &[&'a CaseRecord]) -> Vec<Vec<&'a CaseRecord>> {
+    let key = |r: &CaseRecord, with_dx: bool| {
+        let mut c = r.spec.config.clone();
+        c.fr = 0.0;
+        c.until = crate::twodt::config::TwoDtConfig::default().until;
+        c.give_up_at = None;
+        c.vtk = false;
+        c.frames = false;
+        if !with_dx {
+            c.dx = None;
+        }
+        serde_json::to_string(&(&r.spec.hull, &c)).unwrap_or_default()
+    };
+    let mut groups: Vec<(String, Vec<&CaseRecord>)> = vec![];
+    for r in plunged {
+        let k = key(r, false);
+        match groups.iter_mut().find(|g| g.0 == k) {
+            Some(g) => g.1.push(r),
+            None => groups.push((k, vec![r])),
+        }
+    }
+    let mut out = vec![];
+    for (_, g) in groups {
+        let mut frs: Vec<f64> = g.iter().map(|r| r.result.fr).collect();
+        frs.sort_by(f64::total_cmp);
+        let repeats = frs.windows(2).any(|w| w[0] == w[1]);
+        let mut split: Vec<(String, Vec<&CaseRecord>)> = vec![];
+        for r in g {
+            let k = if repeats { key(r, true) } else { String::new() };
+            match split.iter_mut().find(|s| s.0 == k) {
+                Some(s) => s.1.push(r),
+                None => split.push((k, vec![r])),
+            }
+        }
+        for (_, mut s) in split {
+            s.sort_by(|a, b| a.result.fr.total_cmp(&b.result.fr));
+            let mut f: Vec<f64> = s.iter().map(|r| r.result.fr).collect();
+            f.dedup();
+            if f.len() >= 2 && f.len() == s.len() {
+                out.push(s);
+            }
+        }
+    }
+    out
+}
+
+/// The trend lines of one series of cases in increasing Fr (`labelled`: name its cases, when there are
+/// several series).
+fn group_trends(cases: &[&CaseRecord], labelled: bool) -> Vec<String> {
+    let plunged: Vec<(f64, &crate::twodt::run::PlungeMetrics)> = cases
+        .iter()
+        .filter_map(|r| r.result.plunge.as_ref().map(|m| (r.result.fr, m)))
+        .collect();
     let series = |f: &dyn Fn(&crate::twodt::run::PlungeMetrics) -> f64| -> Vec<f64> {
         plunged.iter().map(|(_, m)| f(m)).collect()
     };
@@ -272,8 +332,14 @@ pub fn trends(recs: &[CaseRecord]) -> Vec<String> {
             yes(b).to_string()
         }
     };
+    let label = if labelled {
+        let idx: Vec<String> = cases.iter().map(|r| r.spec.index.to_string()).collect();
+        format!(" (cases {})", idx.join(", "))
+    } else {
+        String::new()
+    };
     vec![
-        format!("Fr = {}", list(&frs)),
+        format!("Fr = {}{label}", list(&frs)),
         format!("x_plunge/L grows with Fr: {} ({})", yes(rising(&xp)), list(&xp)),
         format!("y_plunge/L grows with Fr: {} ({})", yes(rising(&yp)), list(&yp)),
         format!("I_OG/S² falls with Fr: {} ({})", jet_verdict(falling(&io)), list(&io)),
