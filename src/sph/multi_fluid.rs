@@ -30,7 +30,10 @@
 //! `None`): the single-phase solver costs nothing extra.
 
 use super::eos::Eos;
-use super::equations::{continuity, density_diffusion::DensityDiffusion, pressure_force, timestep, viscosity};
+use super::equations::{
+    continuity, density_diffusion::DensityDiffusion, interface_repulsion::interface_repulsion, pressure_force,
+    timestep, viscosity,
+};
 use super::kernel_table::GradientFactor;
 use super::solver::{GhostState, SolverConfig};
 use nalgebra::SVector;
@@ -174,20 +177,6 @@ impl ShepardDensity {
             fallback
         }
     }
-}
-
-/// Grenier et al. (2009) eq. (23), the interface repulsion's acceleration on particle i from a neighbour j
-/// of another phase (m/s²): −ε_I (|p_i| + |p_j|) ∇_i W_ij V_j / ρ_i.
-#[inline]
-pub fn interface_repulsion<const D: usize>(
-    eps: f64,
-    p_i: f64,
-    p_j: f64,
-    rho_i: f64,
-    grad_w: &SVector<f64, D>,
-    v_j: f64,
-) -> SVector<f64, D> {
-    grad_w * (-eps * (p_i.abs() + p_j.abs()) * v_j / rho_i)
 }
 
 /// The prepared state of one right-hand-side evaluation, as the multi-fluid gather reads it.

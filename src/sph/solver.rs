@@ -602,43 +602,27 @@ impl<const D: usize> Simulation<D> {
             None => GradientFactor::Exact(kernel),
         };
         self.neighbours.resize_with(nf, Vec::new);
-        // With several phases the gradient is of the Shepard density, over the particle's own phase.
-        let phases = cfg.multi_fluid.as_ref().map(|_| (&self.fluid.phase, &gs.phase));
-        let rho: &[f64] = if phases.is_some() { &self.rho_eos } else { rho };
-        self.grad_rho = self
-            .neighbours
-            .par_iter_mut()
-            .enumerate()
-            .map(|(i, list)| {
-                list.clear();
-                let mut acc = RenormalizedGradient::<D>::default();
-                cells.for_each_within_r2(all_pos, &pos[i], kernel.support, |j, rij, r2| {
-                    if j == i {
-                        return;
-                    }
-                    list.push(j as u32);
-                    if let Some((fp, gp)) = phases {
-                        if fp[i] != if j < nf { fp[j] } else { gp[j - nf] } {
-                            return;
-                        }
-                    }
-                    if need_grad {
-                        let gw = rij * gf.at(r2);
-                        let (rho_j, v_j) = if j < nf {
-                            (rho[j], volume[j])
-                        } else {
-                            (gs.rho[j - nf], gs.volume[j - nf])
-                        };
-                        acc.add(&gw, &rij, rho_j - rho[i], v_j);
-                    }
-                });
-                if need_grad {
-                    acc.gradient()
-                } else {
-                    SVector::zeros()
-                }
-            })
-            .collect();
+        let pass = GradientPass {
+            pos,
+            all_pos,
+            cells,
+            support: kernel.support,
+            volume,
+            ghosts: gs,
+            gradient: gf,
+            need_grad,
+        };
+        // With several phases the gradient is of the Shepard density, over the particle's own phase (a
+        // separate instance of the pass, so that one phase pays nothing for the test).
+        self.grad_rho = match cfg.multi_fluid {
+            None => pass.run(&mut self.neighbours, rho, |_, _| true),
+            Some(_) => {
+                let (fp, gp) = (&self.fluid.phase, &gs.phase);
+                pass.run(&mut self.neighbours, &self.rho_eos, |i, j| {
+                    fp[i] == if j < nf { fp[j] } else { gp[j - nf] }
+                })
+            }
+        };
         self.timings.density_gradient += clock.elapsed().as_secs_f64();
         let clock = Instant::now();
         if let Some(mf) = &cfg.multi_fluid {
@@ -1031,6 +1015,60 @@ impl<const D: usize> Simulation<D> {
                 w += wv;
             });
         (w > 0.0).then(|| s / w)
+    }
+}
+
+/// Stage 4's gather: each fluid particle's neighbour list (kept for stage 5) and its renormalised density
+/// gradient, eqs. (4.19)–(4.20), over the neighbours `same` admits.
+struct GradientPass<'a, const D: usize> {
+    pos: &'a [SVector<f64, D>],
+    all_pos: &'a [SVector<f64, D>],
+    cells: &'a CellList<D>,
+    support: f64,
+    volume: &'a [f64],
+    ghosts: &'a GhostState<D>,
+    gradient: GradientFactor<'a, D>,
+    need_grad: bool,
+}
+
+impl<const D: usize> GradientPass<'_, D> {
+    fn run(
+        &self,
+        neighbours: &mut [Vec<u32>],
+        rho: &[f64],
+        same: impl Fn(usize, usize) -> bool + Sync,
+    ) -> Vec<SVector<f64, D>> {
+        let nf = self.pos.len();
+        let gs = self.ghosts;
+        neighbours
+            .par_iter_mut()
+            .enumerate()
+            .map(|(i, list)| {
+                list.clear();
+                let mut acc = RenormalizedGradient::<D>::default();
+                self.cells
+                    .for_each_within_r2(self.all_pos, &self.pos[i], self.support, |j, rij, r2| {
+                        if j == i {
+                            return;
+                        }
+                        list.push(j as u32);
+                        if self.need_grad && same(i, j) {
+                            let gw = rij * self.gradient.at(r2);
+                            let (rho_j, v_j) = if j < nf {
+                                (rho[j], self.volume[j])
+                            } else {
+                                (gs.rho[j - nf], gs.volume[j - nf])
+                            };
+                            acc.add(&gw, &rij, rho_j - rho[i], v_j);
+                        }
+                    });
+                if self.need_grad {
+                    acc.gradient()
+                } else {
+                    SVector::zeros()
+                }
+            })
+            .collect()
     }
 }
 
