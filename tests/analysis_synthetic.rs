@@ -335,3 +335,45 @@ fn checks_between_regular_ones_compare_with_the_same_earlier_check() {
         "closed already at the previous regular check"
     );
 }
+
+/// With several phases the analyses read the water alone: in the still two-layer tank (water under air) the
+/// water's top row is its free surface and the rows under it are not, though air particles cover it; the
+/// snapshot the cavity probe and the 2D+t detection read holds the water's particles only.
+#[test]
+fn water_under_air_has_its_free_surface_where_the_air_begins() {
+    let case = bowwave::cases::load("two-layer").expect("built-in");
+    let mut sim = bowwave::cases::setup::build(&case, Some(10.0)).expect("builds");
+    sim.refresh();
+    let fs = sim.free_surface_of_phase(bowwave::sph::free_surface::Thresholds::default(), 0);
+    let f = &sim.fluid;
+    let dx = sim.cfg.dx;
+    let (mut top, mut top_surface, mut below_surface) = (0, 0, 0);
+    for i in 0..f.len() {
+        if f.phase[i] != 0 {
+            continue;
+        }
+        let y = f.pos[i].y;
+        let away_from_walls = f.pos[i].x > 3.0 * dx && f.pos[i].x < 2.0 - 3.0 * dx;
+        if (y - (1.0 - 0.5 * dx)).abs() < 1e-9 && away_from_walls {
+            top += 1;
+            top_surface += fs.on_surface[i] as usize;
+        } else if y < 1.0 - 3.5 * dx && y > 3.0 * dx && away_from_walls {
+            below_surface += fs.on_surface[i] as usize;
+        }
+    }
+    assert!(top > 10);
+    assert_eq!(
+        top_surface, top,
+        "every particle of the water's top row is on its surface"
+    );
+    assert_eq!(below_surface, 0, "no water particle three rows down is");
+    // Seen with the air as matter, the same row is inside.
+    let all = sim.free_surface(bowwave::sph::free_surface::Thresholds::default());
+    let top_all = (0..f.len())
+        .filter(|&i| f.phase[i] == 0 && (f.pos[i].y - (1.0 - 0.5 * dx)).abs() < 1e-9 && all.on_surface[i])
+        .count();
+    assert_eq!(top_all, 0);
+    let n_water = (0..f.len()).filter(|&i| f.phase[i] == 0).count();
+    let snap = Snapshot::from_simulation(&mut sim, dx);
+    assert_eq!(snap.len(), n_water);
+}

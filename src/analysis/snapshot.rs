@@ -29,15 +29,18 @@ impl Snapshot {
     /// `dx` is the finest particle spacing. Refreshes the simulation's derived fields first.
     pub fn from_simulation(sim: &mut crate::sph::solver::Simulation<2>, dx: f64) -> Self {
         sim.refresh();
-        let fs = sim.free_surface(crate::sph::free_surface::Thresholds::default());
+        // The first phase (the water) alone: with several phases the others fill what the analyses read as
+        // empty (cavities, the region above a jet).
+        let fs = sim.free_surface_of_phase(crate::sph::free_surface::Thresholds::default(), 0);
         let f = &sim.fluid;
+        let keep: Vec<usize> = (0..f.len()).filter(|&i| f.phase[i] == 0).collect();
         Snapshot {
-            pos: f.pos.clone(),
-            vel: f.vel.clone(),
-            vol: f.mass.iter().zip(&f.rho).map(|(m, r)| m / r).collect(),
-            on_surface: fs.on_surface,
-            normal: fs.normal,
-            lambda: fs.lambda,
+            pos: keep.iter().map(|&i| f.pos[i]).collect(),
+            vel: keep.iter().map(|&i| f.vel[i]).collect(),
+            vol: keep.iter().map(|&i| f.mass[i] / f.rho[i]).collect(),
+            on_surface: keep.iter().map(|&i| fs.on_surface[i]).collect(),
+            normal: keep.iter().map(|&i| fs.normal[i]).collect(),
+            lambda: keep.iter().map(|&i| fs.lambda[i]).collect(),
             h: sim.kernel.h,
             dx,
         }

@@ -131,14 +131,18 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
         2.0 * m2[0].sqrt(),
         2.0 * m2[1].sqrt(),
     ];
+    let walls = sim.read_sensors();
+    let (peak, impulse) = sim.take_sensor_record();
+    // Front and gauges read the water (the first phase) alone: with several phases the others fill the tank.
+    let several = sim.cfg.multi_fluid.is_some();
+    let water_only = several.then(|| sim.fluid.phase_subset(0));
+    let water = water_only.as_ref().unwrap_or(&sim.fluid);
     if case.probes.front {
-        let f = diagnostics::front(&sim.fluid, 0, sim.cfg.dx);
+        let f = diagnostics::front(water, 0, sim.cfg.dx);
         row.push(f);
         row.push(f / case.scales.length);
     }
     // The wall sensors, in the order of the case's probes (setup::wall_sensors).
-    let walls = sim.read_sensors();
-    let (peak, impulse) = sim.take_sensor_record();
     let mut k = 0;
     for p in &case.probes.pressure {
         if p.in_fluid {
@@ -156,7 +160,7 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
             .map_or(nalgebra::Vector2::zeros(), |m| m.pose(sim.time).d);
         let bottom = g.bottom.unwrap_or_else(|| case.floor_under(g.x)) + shift.y;
         let x = g.x + shift.x;
-        let eta = diagnostics::water_level(&sim.fluid, x, sim.cfg.dx, bottom, g.connected);
+        let eta = diagnostics::water_level(water, x, sim.cfg.dx, bottom, g.connected);
         row.push(eta);
         row.push(eta - bottom);
         row.push((eta - bottom) / case.scales.length);

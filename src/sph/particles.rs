@@ -61,6 +61,24 @@ impl<const D: usize> Fluid<D> {
         apply(&mut self.phase, order);
     }
 
+    /// The particles of phase `k` alone (a copy), e.g. the water of a multi-fluid scene for the analyses of its
+    /// free surface.
+    pub fn phase_subset(&self, k: u8) -> Fluid<D> {
+        let keep: Vec<usize> = (0..self.len()).filter(|&i| self.phase[i] == k).collect();
+        fn pick<T: Copy>(v: &[T], keep: &[usize]) -> Vec<T> {
+            keep.iter().map(|&i| v[i]).collect()
+        }
+        Fluid {
+            pos: pick(&self.pos, &keep),
+            vel: pick(&self.vel, &keep),
+            rho: pick(&self.rho, &keep),
+            mass: pick(&self.mass, &keep),
+            id: pick(&self.id, &keep),
+            tag: pick(&self.tag, &keep),
+            phase: pick(&self.phase, &keep),
+        }
+    }
+
     /// Total mass.
     pub fn total_mass(&self) -> f64 {
         self.mass.iter().sum()

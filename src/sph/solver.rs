@@ -933,6 +933,33 @@ impl<const D: usize> Simulation<D> {
         super::free_surface::detect(&self.kernel, &self.cells, &self.all_pos, &volume, nf, th)
     }
 
+    /// The free surface of phase `k` (the water of a multi-fluid scene): the other phases and their ghosts count
+    /// as empty space, so the water's surface under the air is found as if the air were not there. Entries of
+    /// the other phases' particles are meaningless. With one phase, [`Simulation::free_surface`].
+    pub fn free_surface_of_phase(
+        &self,
+        th: super::free_surface::Thresholds,
+        k: u8,
+    ) -> super::free_surface::FreeSurface<D> {
+        if self.cfg.multi_fluid.is_none() {
+            return self.free_surface(th);
+        }
+        let nf = self.fluid.len();
+        let fluid = self
+            .volume
+            .iter()
+            .zip(&self.fluid.phase)
+            .map(|(&v, &p)| if p == k { v } else { 0.0 });
+        let ghosts = self
+            .ghosts
+            .volume
+            .iter()
+            .zip(&self.ghosts.phase)
+            .map(|(&v, &p)| if p == k { v } else { 0.0 });
+        let volume: Vec<f64> = fluid.chain(ghosts).collect();
+        super::free_surface::detect(&self.kernel, &self.cells, &self.all_pos, &volume, nf, th)
+    }
+
     /// High-frequency pressure noise (Pa): the RMS over the fluid particles of p_i minus the kernel-smoothed
     /// (Shepard) pressure at x_i, ghosts included. Call after [`Simulation::refresh`].
     pub fn pressure_noise(&self) -> f64 {
