@@ -77,6 +77,41 @@ fn err_of(text: &str) -> String {
         .to_string()
 }
 
+/// Issue #32's bad input for phases: each is refused before anything runs, naming the field.
+#[test]
+fn bad_phases_name_the_field() {
+    let good = cases::builtin::builtin_text("two-layer").unwrap();
+    CaseFile::parse(good, "two-layer.toml").expect("the built-in parses");
+    let cases = [
+        (good.replace("phase = \"air\"", "phase = \"steam\""), "blocks[1].phase"),
+        (good.replace("name = \"air\"", "name = \"water\""), "phases[0].name"),
+        (good.replace("rho0 = 1.0", "rho0 = 1e-3"), "phases[0].rho0"),
+        (good.replace("gamma = 1.4", "gamma = 1.4\nc0 = 1.0"), "phases[0].c0"),
+        (good.replace("gamma = 1.4", "gamma = 0.5"), "phases[0].gamma"),
+        (good.replace("max = [2.0, 1.0]", "max = [2.0, 1.2]"), "blocks[1]"),
+        (good.replace("phase = \"air\"", "phase = \"water\""), "phases[0]"),
+        (
+            good.replace("background_pressure = 982.0", "background_pressure = 0.0"),
+            "multi_fluid.background_pressure",
+        ),
+        (
+            good.replace("[1.0, 2.0]]", "[1.2, 2.0]]"),
+            "multi_fluid.background_pressure",
+        ),
+        (
+            good.replace("background_pressure = 982.0", "background_pressure = -1.0"),
+            "multi_fluid.background_pressure",
+        ),
+    ];
+    for (text, field) in cases {
+        let e = err_of(&text);
+        assert!(
+            e.contains("bad.toml") && e.contains(field),
+            "expected `{field}` in: {e}"
+        );
+    }
+}
+
 #[test]
 fn bad_case_files_name_the_file_and_field() {
     let good = cases::builtin::builtin_text("hydrostatic").unwrap();

@@ -591,11 +591,92 @@ impl CaseFile {
                 "a non-negative ε_I (Grenier et al.: 0.01–0.1; 0 is off)",
             ));
         }
+        let mut used = vec![false; self.phases.len() + 1];
         for (k, b) in self.blocks.iter().enumerate() {
             let (BlockSpec::Rectangle { phase, .. } | BlockSpec::Disc { phase, .. }) = b;
-            if let Err(expected) = self.phase_index(phase.as_deref()) {
-                return Err(err(&format!("blocks[{k}].phase"), &expected));
+            match self.phase_index(phase.as_deref()) {
+                Ok(i) => used[i as usize] = true,
+                Err(expected) => return Err(err(&format!("blocks[{k}].phase"), &expected)),
             }
+        }
+        if self.phases.is_empty() {
+            return Ok(());
+        }
+        if let Some(k) = used.iter().skip(1).position(|u| !u) {
+            return Err(err(
+                &format!("phases[{k}]"),
+                "a phase that at least one block fills (`blocks.phase`)",
+            ));
+        }
+        // Two blocks of different phases must not overlap: a particle of each at the same place.
+        for (a, ba) in self.blocks.iter().enumerate() {
+            for (b, bb) in self.blocks.iter().enumerate().skip(a + 1) {
+                let (BlockSpec::Rectangle { phase: pa, .. } | BlockSpec::Disc { phase: pa, .. }) = ba;
+                let (BlockSpec::Rectangle { phase: pb, .. } | BlockSpec::Disc { phase: pb, .. }) = bb;
+                if self.phase_index(pa.as_deref()) != self.phase_index(pb.as_deref()) && blocks_overlap(ba, bb) {
+                    return Err(err(
+                        &format!("blocks[{b}]"),
+                        &format!("a block that does not overlap blocks[{a}], which holds another phase"),
+                    ));
+                }
+            }
+        }
+        // Ranges the model is meant for (Hammani et al. run 2–1000): a density ratio to the `[fluid]` and a
+        // stiffness ρ0c0²/γ ratio (1 by the default rule) within a factor 1e4 and 1e3.
+        let stiffness = |rho0: f64, c0: f64, kind: EosKind, gamma: f64| {
+            rho0 * c0 * c0 / if kind == EosKind::Tait { gamma } else { 1.0 }
+        };
+        let g = self.gravity_magnitude();
+        let c_fluid = self
+            .fluid
+            .c0
+            .unwrap_or_else(|| self.fluid.c0_over_sqrt_g_length.unwrap_or(0.0) * (g * self.scales.length).sqrt());
+        let b_fluid = stiffness(self.fluid.rho0, c_fluid, self.fluid.eos, 7.0);
+        for (k, p) in self.phases.iter().enumerate() {
+            let ratio = p.rho0 / self.fluid.rho0;
+            if !(1e-4..=1e4).contains(&ratio) {
+                return Err(err(
+                    &format!("phases[{k}].rho0"),
+                    "a density within a factor 1e4 of the `[fluid]`'s (air/water: 1e-3)",
+                ));
+            }
+            if let Some(c) = p.c0 {
+                let r = stiffness(p.rho0, c, p.eos, p.gamma) / b_fluid;
+                if !(1e-3..=1e3).contains(&r) {
+                    return Err(err(
+                        &format!("phases[{k}].c0"),
+                        "a sound speed giving a stiffness ρ0c0²/γ within a factor 1e3 of the `[fluid]`'s (leave it out \
+                         for the equal-stiffness rule, Hammani et al. eq. 23)",
+                    ));
+                }
+            }
+        }
+        // A background pressure needs a closed tank (at a free surface it pushes the particles out); a closed
+        // tank with phases of very different densities needs one (else the light phase's negative pressures
+        // open a void at the interface, Hammani et al. Fig. 1).
+        let closed = self.walls.iter().any(|w| {
+            let (a, b) = (&w.points[0], &w.points[w.points.len() - 1]);
+            w.points.len() > 3 && (a[0] - b[0]).hypot(a[1] - b[1]) == 0.0
+        });
+        let contrast = self.phases.iter().any(|p| {
+            let r = p.rho0 / self.fluid.rho0;
+            !(0.1..=10.0).contains(&r)
+        });
+        let pb = self.multi_fluid.background_pressure;
+        if pb > 0.0 && !closed {
+            return Err(err(
+                "multi_fluid.background_pressure",
+                "0 without a closed wall (a polyline whose last point is its first): at a free surface a \
+                 background pressure pushes the particles out",
+            ));
+        }
+        if pb == 0.0 && closed && contrast {
+            return Err(err(
+                "multi_fluid.background_pressure",
+                "a positive background pressure in a closed tank holding phases of density ratio above 10 \
+                 (Hammani et al. use 0.1 of the largest hydrostatic pressure; without it the light phase's \
+                 negative pressures open a void at the interface)",
+            ));
         }
         Ok(())
     }
@@ -931,6 +1012,46 @@ mod tests {
             let c = crate::cases::load(name).unwrap();
             assert!(c.numerics.kernel_table, "{name}");
             assert_eq!(c.numerics.kernel_table, super::Numerics::default().kernel_table);
+        }
+    }
+}
+
+/// Whether two blocks share area (rectangles and discs or annuli; a disc inside an annulus's hole does not).
+fn blocks_overlap(a: &BlockSpec, b: &BlockSpec) -> bool {
+    // A rectangle as (min, max), a disc as (centre, inner radius, radius).
+    enum Shape {
+        Rect([f64; 2], [f64; 2]),
+        Disc([f64; 2], f64, f64),
+    }
+    let shape = |s: &BlockSpec| match s {
+        BlockSpec::Rectangle { min, max, .. } => Shape::Rect([min[0], min[1]], [max[0], max[1]]),
+        BlockSpec::Disc {
+            centre,
+            radius,
+            inner_radius,
+            ..
+        } => Shape::Disc([centre[0], centre[1]], *inner_radius, *radius),
+    };
+    let eps = 1e-12;
+    match (shape(a), shape(b)) {
+        (Shape::Rect(lo1, hi1), Shape::Rect(lo2, hi2)) => (0..2).all(|k| lo1[k].max(lo2[k]) < hi1[k].min(hi2[k]) - eps),
+        (Shape::Disc(c1, i1, r1), Shape::Disc(c2, i2, r2)) => {
+            let d = (c1[0] - c2[0]).hypot(c1[1] - c2[1]);
+            // Concentric rings overlap when their radial ranges do; others when the discs meet and neither
+            // lies inside the other's hole.
+            if d < eps {
+                i1.max(i2) < r1.min(r2) - eps
+            } else {
+                d < r1 + r2 - eps && d + r2 > i1 + eps && d + r1 > i2 + eps
+            }
+        }
+        (Shape::Rect(lo, hi), Shape::Disc(c, inner, r)) | (Shape::Disc(c, inner, r), Shape::Rect(lo, hi)) => {
+            let near = [c[0].clamp(lo[0], hi[0]), c[1].clamp(lo[1], hi[1])];
+            let far = [
+                if c[0] - lo[0] > hi[0] - c[0] { lo[0] } else { hi[0] },
+                if c[1] - lo[1] > hi[1] - c[1] { lo[1] } else { hi[1] },
+            ];
+            (near[0] - c[0]).hypot(near[1] - c[1]) < r - eps && (far[0] - c[0]).hypot(far[1] - c[1]) > inner + eps
         }
     }
 }
