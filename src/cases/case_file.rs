@@ -1002,20 +1002,6 @@ pub fn pressure_columns(p: &PressureProbe) -> Vec<String> {
     c
 }
 
-#[cfg(test)]
-mod tests {
-    /// Regression: `#[serde(default)]` on `kernel_table` gave `false` to every case file that did not name it,
-    /// so the built-in cases kept the exact kernel after the table became the default.
-    #[test]
-    fn case_file_without_kernel_table_gets_the_tabulated_default() {
-        for name in crate::cases::builtin::builtin_names() {
-            let c = crate::cases::load(name).unwrap();
-            assert!(c.numerics.kernel_table, "{name}");
-            assert_eq!(c.numerics.kernel_table, super::Numerics::default().kernel_table);
-        }
-    }
-}
-
 /// Whether two blocks share area (rectangles and discs or annuli; a disc inside an annulus's hole does not).
 fn blocks_overlap(a: &BlockSpec, b: &BlockSpec) -> bool {
     // A rectangle as (min, max), a disc as (centre, inner radius, radius).
@@ -1052,6 +1038,20 @@ fn blocks_overlap(a: &BlockSpec, b: &BlockSpec) -> bool {
                 if c[1] - lo[1] > hi[1] - c[1] { lo[1] } else { hi[1] },
             ];
             (near[0] - c[0]).hypot(near[1] - c[1]) < r - eps && (far[0] - c[0]).hypot(far[1] - c[1]) > inner + eps
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// Regression: `#[serde(default)]` on `kernel_table` gave `false` to every case file that did not name it,
+    /// so the built-in cases kept the exact kernel after the table became the default.
+    #[test]
+    fn case_file_without_kernel_table_gets_the_tabulated_default() {
+        for name in crate::cases::builtin::builtin_names() {
+            let c = crate::cases::load(name).unwrap();
+            assert!(c.numerics.kernel_table, "{name}");
+            assert_eq!(c.numerics.kernel_table, super::Numerics::default().kernel_table);
         }
     }
 }
