@@ -230,6 +230,8 @@ fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
     assert!(line(&few, "x_plunge/L grows").contains(": holds"), "{few:?}");
     let text = report("jet-guard", "athena", "approximation", "", &records, &[], 2);
     assert!(text.contains("read x_p, y_p and H_pj only"), "{text}");
+    // Issue #32: a single-phase report says that what follows the cavity's closure is without the trapped air.
+    assert!(text.contains("without the trapped air"), "{text}");
     with_jets(&mut records, RESOLVED_JET_PARTICLES);
     let enough = trends(&records);
     for metric in ["I_OG/S² falls", "α_G rises"] {

@@ -214,6 +214,12 @@ pub fn report(
             );
         }
     }
+    let _ = writeln!(
+        s,
+        "\nEvery metric is taken at the plunge, when the jet closes its cavity; the runs are single phase, so what \
+         follows the closure in their outputs (the cavity's collapse, the splash-up) is without the trapped air \
+         (`docs/reference/method.md`, \"Several phases\")."
+    );
     let _ = writeln!(s, "\n## Published trends, checked on our plunging cases\n");
     for line in trends(recs) {
         let _ = writeln!(s, "- {line}");

@@ -279,8 +279,13 @@ pub fn cavity_summary(r: &RunResult) -> Option<String> {
     let l = r.case.scales.length;
     let g = r.case.gravity_magnitude();
     let t_scale = (l / g).sqrt();
+    let air = if r.sim.cfg.multi_fluid.is_some() {
+        ""
+    } else {
+        "; after it the trapped air is not modelled (one phase: the cavity is empty space; `[[phases]]` adds air)"
+    };
     Some(format!(
-        "cavity closed between t* = {:.3} and {:.3}: area {:.4} H², centroid ({:.3}, {:.3}) H, circulation {:.3} √(g H³) (positive clockwise)",
+        "cavity closed between t* = {:.3} and {:.3}: area {:.4} H², centroid ({:.3}, {:.3}) H, circulation {:.3} √(g H³) (positive clockwise){air}",
         c.previous_time / t_scale,
         c.time / t_scale,
         c.area / (l * l),
