@@ -296,8 +296,8 @@ pub struct Simulation<const D: usize> {
     pressure: Vec<f64>,
     /// Each fluid particle's volume m/ρ at the current stage (m^D), computed once per stage.
     volume: Vec<f64>,
-    /// The density the state equation reads at the current stage: the same-phase Shepard density with
-    /// several phases ([`super::multi_fluid`]); empty with one phase, where it is the integrated ρ itself.
+    /// The density the state equation reads at the current stage with several phases ([`super::multi_fluid`]):
+    /// the integrated ρ, or the same-phase Shepard density with [`StateDensity::Shepard`]; empty with one phase.
     rho_eos: Vec<f64>,
     grad_rho: Vec<SVector<f64, D>>,
     /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
@@ -417,7 +417,7 @@ impl<const D: usize> Simulation<D> {
     }
 
     /// Each particle's pressure from its integrated density and its phase's law (Pa): what outputs show
-    /// between evaluations (with several phases the evaluation's own pressure reads the Shepard density).
+    /// between evaluations (the same as the evaluation's unless the state equation reads the Shepard density).
     pub fn state_pressures(&self) -> Vec<f64> {
         let eos = self.phase_eos();
         let f = &self.fluid;
@@ -450,8 +450,8 @@ impl<const D: usize> Simulation<D> {
         let phase = &self.fluid.phase;
         self.pressure = match multi {
             None => rho.par_iter().map(|&r| eos.pressure(r)).collect(),
-            // Provisional: from the integrated density, for the ghosts' mirroring; replaced below by the
-            // pressure of the Shepard density.
+            // From the integrated density, for the ghosts' mirroring; replaced below when the state equation
+            // reads the Shepard density.
             Some(mf) => rho.par_iter().zip(phase).map(|(&r, &k)| mf.pressure(k, r)).collect(),
         };
         self.volume = self.fluid.mass.par_iter().zip(rho).map(|(m, r)| m / r).collect();
