@@ -31,8 +31,10 @@
 
 use super::eos::Eos;
 use super::equations::{
-    continuity, density_diffusion::DensityDiffusion, interface_repulsion::interface_repulsion, pressure_force,
-    timestep, viscosity,
+    continuity,
+    density_diffusion::{self, DensityDiffusion},
+    interface_repulsion::interface_repulsion,
+    pressure_force, timestep, viscosity,
 };
 use super::kernel_table::GradientFactor;
 use super::solver::{GhostState, SolverConfig};
@@ -106,17 +108,6 @@ pub struct MultiFluid {
 }
 
 impl MultiFluid {
-    /// The phases with no background pressure, no repulsion and the default diffusion form.
-    pub fn new(phases: Vec<Phase>) -> Self {
-        MultiFluid {
-            phases,
-            background_pressure: 0.0,
-            interface_repulsion: 0.0,
-            diffusion: VolumeDiffusion::default(),
-            density: StateDensity::default(),
-        }
-    }
-
     /// The state equations, in the phases' order.
     pub fn eoses(&self) -> Vec<Eos> {
         self.phases.iter().map(|p| p.eos).collect()
@@ -132,11 +123,6 @@ impl MultiFluid {
     #[inline]
     pub fn pressure(&self, k: u8, rho: f64) -> f64 {
         self.eos(k).pressure(rho)
-    }
-
-    /// The largest reference sound speed of the phases (m/s): it sets the time step.
-    pub fn max_c0(&self) -> f64 {
-        self.phases.iter().map(|p| p.eos.c0).fold(0.0, f64::max)
     }
 }
 
@@ -185,12 +171,12 @@ pub(super) struct Stage<'a, const D: usize> {
     pub vel: &'a [SVector<f64, D>],
     /// The integrated density ρ̃ = m/V.
     pub rho_tilde: &'a [f64],
-    /// The same-phase Shepard density the state equation read.
+    /// The density the state equation read (ρ̃, or the same-phase Shepard density).
     pub rho: &'a [f64],
     pub pressure: &'a [f64],
     /// V = m/ρ̃.
     pub volume: &'a [f64],
-    /// The renormalised gradient of the Shepard density over the same phase.
+    /// The renormalised gradient of `rho` over the same phase.
     pub grad_rho: &'a [SVector<f64, D>],
     pub phase: &'a [u8],
     /// Each fluid particle's neighbours (fluid below the fluid count, ghosts after).
@@ -212,7 +198,6 @@ pub(super) fn rates<const D: usize>(
     let gs = st.ghosts;
     let h = st.h;
     let factor = mf.diffusion.factor();
-    let gradient_part = cfg.diffusion == DensityDiffusion::DeltaSph;
     (0..nf)
         .into_par_iter()
         .map(|i| {
@@ -261,10 +246,16 @@ pub(super) fn rates<const D: usize>(
                 if k_j == k {
                     if diff > 0.0 {
                         // dV_i/dt ⊃ −δhc0 V_i ψ·∇W V_j / ρ_i (eq. 20) is dρ̃_i/dt ⊃ δhc0 (ρ̃_i/ρ_i) ψ·∇W V_j.
-                        let mut psi = -rij * (factor * (rho_j - rho_i) / r2);
-                        if gradient_part {
-                            psi -= st.grad_rho[i] + grad_j;
-                        }
+                        let psi = density_diffusion::psi_with_factor(
+                            cfg.diffusion,
+                            factor,
+                            rho_i,
+                            rho_j,
+                            &rij,
+                            r2,
+                            &st.grad_rho[i],
+                            &grad_j,
+                        );
                         drho += diff * (rt_i / rho_i) * psi.dot(&gw) * v_j;
                     }
                     let pi = viscosity::pi_ij(&u_ji, &rij, r2, h);

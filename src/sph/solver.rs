@@ -296,8 +296,8 @@ pub struct Simulation<const D: usize> {
     pressure: Vec<f64>,
     /// Each fluid particle's volume m/ρ at the current stage (m^D), computed once per stage.
     volume: Vec<f64>,
-    /// The density the state equation reads at the current stage with several phases ([`super::multi_fluid`]):
-    /// the integrated ρ, or the same-phase Shepard density with [`StateDensity::Shepard`]; empty with one phase.
+    /// The same-phase Shepard density the state equation reads at the current stage with
+    /// [`StateDensity::Shepard`] ([`super::multi_fluid`]); empty otherwise, where it reads the integrated ρ.
     rho_eos: Vec<f64>,
     grad_rho: Vec<SVector<f64, D>>,
     /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
@@ -546,14 +546,13 @@ impl<const D: usize> Simulation<D> {
         gs.p = values.par_iter().map(|v| v.2).collect();
         gs.grad_rho = values.par_iter().map(|v| v.3).collect();
         gs.volume = values.par_iter().map(|v| v.4).collect();
+        self.rho_eos.clear();
         match multi {
             Some(mf) => {
                 gs.phase = values.par_iter().map(|v| v.5).collect();
-                // The provisional pressures are final when the state equation reads the integrated density.
-                let (rho_eos, pressure) = if mf.density == StateDensity::Integrated {
-                    (rho.to_vec(), std::mem::take(&mut self.pressure))
-                } else {
-                    shepard_pressures(
+                // The pressures above are final when the state equation reads the integrated density.
+                if mf.density == StateDensity::Shepard {
+                    (self.rho_eos, self.pressure) = shepard_pressures(
                         mf,
                         &self.kernel,
                         &self.cells,
@@ -562,15 +561,10 @@ impl<const D: usize> Simulation<D> {
                         rho,
                         &self.volume,
                         gs,
-                    )
-                };
-                self.rho_eos = rho_eos;
-                self.pressure = pressure;
+                    );
+                }
             }
-            None => {
-                gs.phase.clear();
-                self.rho_eos.clear();
-            }
+            None => gs.phase.clear(),
         }
         // An image's geometric volume is its particle's (the sensors' wet fraction counts it as solid side).
         for g in gs.n_fixed..gs.geom.len() {
@@ -612,13 +606,15 @@ impl<const D: usize> Simulation<D> {
             gradient: gf,
             need_grad,
         };
-        // With several phases the gradient is of the Shepard density, over the particle's own phase (a
-        // separate instance of the pass, so that one phase pays nothing for the test).
+        // The density the state equation read: the integrated one unless a Shepard density was computed.
+        let rho_eos: &[f64] = if self.rho_eos.is_empty() { rho } else { &self.rho_eos };
+        // With several phases the gradient is taken over the particle's own phase (a separate instance of the
+        // pass, so that one phase pays nothing for the test).
         self.grad_rho = match cfg.multi_fluid {
             None => pass.run(&mut self.neighbours, rho, |_, _| true),
             Some(_) => {
                 let (fp, gp) = (&self.fluid.phase, &gs.phase);
-                pass.run(&mut self.neighbours, &self.rho_eos, |i, j| {
+                pass.run(&mut self.neighbours, rho_eos, |i, j| {
                     fp[i] == if j < nf { fp[j] } else { gp[j - nf] }
                 })
             }
@@ -630,7 +626,7 @@ impl<const D: usize> Simulation<D> {
                 pos,
                 vel,
                 rho_tilde,
-                rho: &self.rho_eos,
+                rho: rho_eos,
                 pressure: &self.pressure,
                 volume,
                 grad_rho: &self.grad_rho,

@@ -60,11 +60,28 @@ pub fn psi<const D: usize>(
     grad_i: &SVector<f64, D>,
     grad_j: &SVector<f64, D>,
 ) -> SVector<f64, D> {
+    psi_with_factor(kind, 2.0, rho_i, rho_j, r_ij, r2, grad_i, grad_j)
+}
+
+/// ψ_ij with `factor` in place of the 2 of (ρ_j − ρ_i) r_ji/|r_ij|²: the volume form of the multi-fluid model
+/// offers eq. (20) of Hammani et al. as printed (factor 1) beside the mapped δ-SPH term (2).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub fn psi_with_factor<const D: usize>(
+    kind: DensityDiffusion,
+    factor: f64,
+    rho_i: f64,
+    rho_j: f64,
+    r_ij: &SVector<f64, D>,
+    r2: f64,
+    grad_i: &SVector<f64, D>,
+    grad_j: &SVector<f64, D>,
+) -> SVector<f64, D> {
     let r_ji = -r_ij;
     match kind {
         DensityDiffusion::None => SVector::zeros(),
-        DensityDiffusion::MolteniColagrossi => r_ji * (2.0 * (rho_j - rho_i) / r2),
-        DensityDiffusion::DeltaSph => r_ji * (2.0 * (rho_j - rho_i) / r2) - (grad_i + grad_j),
+        DensityDiffusion::MolteniColagrossi => r_ji * (factor * (rho_j - rho_i) / r2),
+        DensityDiffusion::DeltaSph => r_ji * (factor * (rho_j - rho_i) / r2) - (grad_i + grad_j),
     }
 }
 
