@@ -77,6 +77,16 @@ fn err_of(text: &str) -> String {
         .to_string()
 }
 
+/// Each (case text, field) is refused with an error naming the file and the field.
+fn assert_each_refused_naming(cases: &[(String, &str)]) {
+    for (text, needle) in cases {
+        let e = err_of(text);
+        println!("{e}");
+        assert!(e.contains("bad.toml"), "error does not name the file: {e}");
+        assert!(e.contains(needle), "error does not name `{needle}`: {e}");
+    }
+}
+
 /// Issue #32's bad input for phases: each is refused before anything runs, naming the field.
 #[test]
 fn bad_phases_name_the_field() {
@@ -103,13 +113,7 @@ fn bad_phases_name_the_field() {
             "multi_fluid.background_pressure",
         ),
     ];
-    for (text, field) in cases {
-        let e = err_of(&text);
-        assert!(
-            e.contains("bad.toml") && e.contains(field),
-            "expected `{field}` in: {e}"
-        );
-    }
+    assert_each_refused_naming(&cases);
 }
 
 #[test]
@@ -179,12 +183,7 @@ fn bad_case_files_name_the_file_and_field() {
             "probes.pressure[0].position",
         ),
     ];
-    for (text, needle) in cases {
-        let e = err_of(&text);
-        println!("{e}");
-        assert!(e.contains("bad.toml"), "error does not name the file: {e}");
-        assert!(e.contains(needle), "error does not name `{needle}`: {e}");
-    }
+    assert_each_refused_naming(&cases);
 }
 
 /// Regression (found by tests/fuzzed_input.rs): a case whose spacing leaves a block without a particle
