@@ -623,15 +623,14 @@ impl CaseFile {
         }
         // Ranges the model is meant for (Hammani et al. run 2–1000): a density ratio to the `[fluid]` and a
         // stiffness ρ0c0²/γ ratio (1 by the default rule) within a factor 1e4 and 1e3.
-        let stiffness = |rho0: f64, c0: f64, kind: EosKind, gamma: f64| {
-            rho0 * c0 * c0 / if kind == EosKind::Tait { gamma } else { 1.0 }
-        };
-        let g = self.gravity_magnitude();
-        let c_fluid = self
-            .fluid
-            .c0
-            .unwrap_or_else(|| self.fluid.c0_over_sqrt_g_length.unwrap_or(0.0) * (g * self.scales.length).sqrt());
-        let b_fluid = stiffness(self.fluid.rho0, c_fluid, self.fluid.eos, 7.0);
+        let law = |kind, rho0, c0, gamma| crate::sph::eos::Eos { kind, rho0, c0, gamma };
+        let b_fluid = law(
+            self.fluid.eos,
+            self.fluid.rho0,
+            self.c0(),
+            crate::sph::eos::TAIT_GAMMA_WATER,
+        )
+        .stiffness();
         for (k, p) in self.phases.iter().enumerate() {
             let ratio = p.rho0 / self.fluid.rho0;
             if !(1e-4..=1e4).contains(&ratio) {
@@ -641,7 +640,7 @@ impl CaseFile {
                 ));
             }
             if let Some(c) = p.c0 {
-                let r = stiffness(p.rho0, c, p.eos, p.gamma) / b_fluid;
+                let r = law(p.eos, p.rho0, c, p.gamma).stiffness() / b_fluid;
                 if !(1e-3..=1e3).contains(&r) {
                     return Err(err(
                         &format!("phases[{k}].c0"),

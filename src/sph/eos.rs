@@ -48,6 +48,19 @@ impl Eos {
         }
     }
 
+    /// The law's exponent: γ for Tait, 1 for the linear law (p = ρ0c0²(ρ/ρ0 − 1)).
+    pub fn exponent(&self) -> f64 {
+        match self.kind {
+            EosKind::Linear => 1.0,
+            EosKind::Tait => self.gamma,
+        }
+    }
+
+    /// The stiffness B = ρ0 c0² / exponent (Pa), the constant in front of the law.
+    pub fn stiffness(&self) -> f64 {
+        self.rho0 * self.c0 * self.c0 / self.exponent()
+    }
+
     /// Speed of sound c(ρ) (m/s).
     pub fn sound_speed(&self, rho: f64) -> f64 {
         match self.kind {
