@@ -3,6 +3,7 @@
 
 pub mod drawings;
 pub mod hull_file;
+pub mod hull_solid;
 pub mod hydrostatics;
 pub mod parametric;
 pub mod report;

@@ -107,6 +107,13 @@ pub enum RigidMotion<const D: usize> {
     Fixed,
     /// Translation at constant velocity (m/s) from the initial position.
     ConstantVelocity(SVector<f64, D>),
+    /// Translation from rest to `velocity` (m/s) over `time` (s), the speed growing as v r(t/T) with
+    /// r(τ) = τ²(3 − 2τ) (zero acceleration at both ends, so the start sends no pressure wave of a jump in
+    /// acceleration), then steady.
+    Ramp {
+        velocity: SVector<f64, D>,
+        time: f64,
+    },
 }
 
 impl<const D: usize> RigidMotion<D> {
@@ -114,15 +121,56 @@ impl<const D: usize> RigidMotion<D> {
         match self {
             RigidMotion::Fixed => SVector::zeros(),
             RigidMotion::ConstantVelocity(v) => v * t,
+            RigidMotion::Ramp { velocity, time } => {
+                let tau = (t / time).clamp(0.0, 1.0);
+                // ∫ r = T (τ³ − τ⁴/2) during the ramp, T/2 at its end.
+                velocity * (time * (tau.powi(3) - 0.5 * tau.powi(4)) + (t - time).max(0.0))
+            }
         }
     }
-    pub fn velocity(&self, _t: f64) -> SVector<f64, D> {
+    pub fn velocity(&self, t: f64) -> SVector<f64, D> {
         match self {
             RigidMotion::Fixed => SVector::zeros(),
             RigidMotion::ConstantVelocity(v) => *v,
+            RigidMotion::Ramp { velocity, time } => {
+                let tau = (t / time).clamp(0.0, 1.0);
+                velocity * (tau * tau * (3.0 - 2.0 * tau))
+            }
         }
     }
-    pub fn acceleration(&self, _t: f64) -> SVector<f64, D> {
-        SVector::zeros()
+    pub fn acceleration(&self, t: f64) -> SVector<f64, D> {
+        match self {
+            RigidMotion::Ramp { velocity, time } if t < *time && t > 0.0 => {
+                let tau = t / time;
+                velocity * (6.0 * tau * (1.0 - tau) / time)
+            }
+            _ => SVector::zeros(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector1;
+
+    /// The ramp's displacement, velocity and acceleration are each other's integrals and derivatives, and it
+    /// ends at the steady speed with the distance T v / 2 behind the steady motion's.
+    #[test]
+    fn ramp_motion_is_consistent_and_ends_steady() {
+        let m = RigidMotion::Ramp {
+            velocity: Vector1::new(2.0),
+            time: 3.0,
+        };
+        let e = 1e-6;
+        for t in [0.1, 1.0, 1.5, 2.9, 3.5, 7.0] {
+            let v = (m.displacement(t + e) - m.displacement(t - e)) / (2.0 * e);
+            assert!((v - m.velocity(t)).norm() < 1e-8, "velocity at {t}");
+            let a = (m.velocity(t + e) - m.velocity(t - e)) / (2.0 * e);
+            assert!((a - m.acceleration(t)).norm() < 1e-6, "acceleration at {t}");
+        }
+        assert_eq!(m.velocity(0.0).x, 0.0);
+        assert_eq!(m.velocity(5.0).x, 2.0);
+        assert!((m.displacement(5.0).x - (2.0 * 5.0 - 3.0)).abs() < 1e-12);
     }
 }

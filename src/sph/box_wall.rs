@@ -71,6 +71,13 @@ impl<const D: usize> BoxWall<D> {
         self
     }
 
+    /// The same tank without the fixed ghosts `keep` refuses (by position and mirror point): where another
+    /// wall's ghosts take the lattice nodes, e.g. a hull crossing the tank's symmetry plane.
+    pub fn retain_ghosts(mut self, keep: impl Fn(&SVector<f64, D>, &SVector<f64, D>) -> bool) -> Self {
+        self.base = self.base.filtered(|k| keep(&self.base.pos[k], &self.base.interp[k]));
+        self
+    }
+
     /// Ghost geometry (for tests and plots).
     pub fn base_ghosts(&self) -> &GhostGeometry<D> {
         &self.base

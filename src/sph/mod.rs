@@ -21,6 +21,7 @@ pub mod particles;
 pub mod polyline_wall;
 pub mod rigid_pose;
 pub mod solver;
+pub mod surface_wall;
 pub mod wall_sensor;
 
 pub use equations::{density_diffusion, viscosity};

@@ -12,6 +12,7 @@ use std::path::Path;
 
 mod dam_break;
 mod drops;
+pub mod hull_at_rest;
 mod hydrostatic;
 mod jets;
 mod martin_moyce;
@@ -91,6 +92,7 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "two-layer" => Some(20.0),
         "two-phase-drop-2" | "two-phase-drop-100" => Some(40.0),
         TANK_3D => Some(tank_3d::FULL_RESOLUTION),
+        HULL_AT_REST => Some(hull_at_rest::FULL_RESOLUTION),
         _ => None,
     }
 }
@@ -237,6 +239,8 @@ pub fn run_and_report(case: &CaseFile, out: &Path, opts: RunOptions) -> anyhow::
 
 /// The 3D still tank's name for `bowwave validate` (built from code, not a case file: [`tank_3d`]).
 pub const TANK_3D: &str = "tank-3d";
+/// The 3D hull at rest's name for `bowwave validate` (built from code: [`hull_at_rest`]).
+pub const HULL_AT_REST: &str = "hull-at-rest";
 
 /// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
 ///
@@ -251,7 +255,10 @@ pub fn validate_cli(
     let ghosts = overrides.ghosts;
     let names: Vec<&str> = match case {
         Some(n) => vec![n],
-        None => cases::builtin::builtin_names().into_iter().chain([TANK_3D]).collect(),
+        None => cases::builtin::builtin_names()
+            .into_iter()
+            .chain([TANK_3D, HULL_AT_REST])
+            .collect(),
     };
     let mut all = vec![];
     let mut blown = vec![];
@@ -264,6 +271,28 @@ pub fn validate_cli(
             match tank_3d::tank_at_rest(res, ghosts, true)? {
                 Ok(r) => {
                     eprintln!("{n}: {} fluid particles, {} steps", r.particles, r.steps);
+                    let c = r.checks();
+                    ok &= c.iter().all(|c| c.pass());
+                    all.extend(c);
+                }
+                Err(b) => ok &= record_blowup(n, &b, &mut blown),
+            }
+            continue;
+        }
+        if n == HULL_AT_REST {
+            let res = res.or(full_resolution(n)).unwrap_or(hull_at_rest::FULL_RESOLUTION);
+            eprintln!("validating {n} at D/dx {res:.0} ...");
+            let start = std::time::Instant::now();
+            let ghosts = ghosts.unwrap_or(GhostKind::Fixed);
+            match hull_at_rest::hull_at_rest(res, hull_at_rest::END_T_STAR, ghosts, true)? {
+                Ok(r) => {
+                    eprintln!(
+                        "{n}: {} fluid particles, {} hull ghosts, {} steps, {:.0} s",
+                        r.particles,
+                        r.hull_ghosts,
+                        r.steps,
+                        start.elapsed().as_secs_f64()
+                    );
                     let c = r.checks();
                     ok &= c.iter().all(|c| c.pass());
                     all.extend(c);

@@ -69,7 +69,9 @@ impl RunArgs {
 #[derive(Args)]
 pub struct ValidateArgs {
     /// A built-in case to validate (default: all of them), or `tank-3d`: the still tank in 3D (water H deep in
-    /// a 1 × 0.5 H box, to t√(g/H) = 20; default resolution 20, `--ghosts images` for image faces).
+    /// a 1 × 0.5 H box, to t√(g/H) = 20; default resolution 20, `--ghosts images` for image faces), or
+    /// `hull-at-rest`: the Wigley hull as a 3D wall in still water (the 3D ship's tank, U = 0, to t√(g/D) = 20;
+    /// `--res` is D/dx, default 8; `--ghosts images` for the tank's faces).
     pub case: Option<String>,
     /// Resolution (reference length / dx); default: each case's validation resolution.
     #[arg(long)]
