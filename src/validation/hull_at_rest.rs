@@ -8,6 +8,7 @@ use super::Check;
 use crate::compare3d::ship::{side_points, ShipTank};
 use crate::driver::progress::{Progress, Status};
 use crate::driver::{drive, Flow, Outcome, Watch};
+use crate::geometry::hull_solid::section_polygon;
 use crate::geometry::surface::HullSurface;
 use crate::sph::polyline_wall::GhostKind;
 use crate::sph::solver::{BlowUp, Simulation};
@@ -41,6 +42,10 @@ pub struct HullAtRest {
     /// one side of the symmetry plane), mean over t* 15–20. Reported: the lattice's hull differs from the
     /// spline's by O(dx/D).
     pub buoyancy: f64,
+    /// Mean (p − p_hydrostatic)/(ρ0 g D) of the particles 0.2–0.9 D deep at the end, within 2 dx of the hull's
+    /// section and further away: the water's own pressure, beside the sensors' reading of it at the wall.
+    pub near_hull: f64,
+    pub away: f64,
     pub particles: usize,
     pub hull_ghosts: usize,
     pub steps: u64,
@@ -82,6 +87,15 @@ pub fn hull_at_rest(
             .sum::<f64>()
     };
     let ts = (d / g).sqrt();
+    // Distance (m) from a point to the hull's section in its transverse plane (infinite beyond the ends).
+    let l = scene.length;
+    let hull_distance = |x: &nalgebra::Vector3<f64>| match section_polygon(&hull, x.x / l, 400) {
+        None => f64::INFINITY,
+        Some(p) => p
+            .iter()
+            .map(|q| (q[0] * l - x.y.abs()).hypot(q[1] * l - x.z))
+            .fold(f64::INFINITY, f64::min),
+    };
     let m = sim.fluid.total_mass();
     let volume = crate::geometry::hydrostatics::hydrostatics(&hull, 400, 400).0.volume * scene.length.powi(3);
     let mut sums = vec![0.0; points.len()];
@@ -112,6 +126,22 @@ pub fn hull_at_rest(
         return Ok(Err(b));
     }
     let scale = rho0 * g * d;
+    // The water's own pressure at the end, near the hull and away from it, against the hydrostatic one.
+    sim.refresh();
+    let (mut near, mut far) = ((0.0, 0.0), (0.0, 0.0));
+    for i in 0..sim.n_fluid() {
+        let x = sim.fluid.pos[i];
+        if -x.z < 0.2 * d || -x.z > 0.9 * d {
+            continue;
+        }
+        let band = if hull_distance(&x) < 2.0 * sim.cfg.dx {
+            &mut near
+        } else {
+            &mut far
+        };
+        band.0 += (sim.pressure()[i] - hydrostatic(-x.z)) / scale;
+        band.1 += 1.0;
+    }
     let samples = samples.max(1.0);
     Ok(Ok(HullAtRest {
         res,
@@ -123,6 +153,8 @@ pub fn hull_at_rest(
             .map(|((f, x, _), s)| (*f, s / samples / scale, hydrostatic(-x.z) / scale))
             .collect(),
         buoyancy: lift / samples / (rho0 * g * 0.5 * volume),
+        near_hull: near.0 / near.1,
+        away: far.0 / far.1,
         particles: sim.n_fluid(),
         hull_ghosts: scene.hull_ghosts,
         steps: sim.steps,
@@ -131,7 +163,8 @@ pub fn hull_at_rest(
 
 impl HullAtRest {
     /// E_K/(M g D) < 1e-5 at the end; each hull sensor within 0.01 ρ0 g D of its hydrostatic pressure (the
-    /// issue's 1 %); the buoyancy printed with no tolerance.
+    /// issue's 1 %); the water's own pressure near and away from the hull, and the buoyancy, printed with no
+    /// tolerance.
     pub fn checks(&self) -> Vec<Check> {
         let case = format!(
             "hull-at-rest (Wigley, D/dx {:.0}{})",
@@ -158,6 +191,25 @@ impl HullAtRest {
                 reference: *exact,
                 error: (p - exact).abs(),
                 tolerance: Some(0.01),
+            });
+        }
+        for (quantity, value) in [
+            (
+                "water within 2 dx of the hull, 0.2–0.9 D deep: mean (p − p_h)/(ρ g D) at the end",
+                self.near_hull,
+            ),
+            (
+                "water further from the hull, 0.2–0.9 D deep: mean (p − p_h)/(ρ g D) at the end",
+                self.away,
+            ),
+        ] {
+            out.push(Check {
+                case: case.clone(),
+                quantity: quantity.into(),
+                value,
+                reference: 0.0,
+                error: value.abs(),
+                tolerance: None,
             });
         }
         out.push(Check {
