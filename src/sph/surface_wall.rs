@@ -286,12 +286,18 @@ mod tests {
         }
     }
 
+    /// The plate z = 0, |x|, |y| ≤ ½, sampled at a quarter of 0.1, its normal up.
+    fn unit_plate() -> (Vec<V3>, Vec<V3>) {
+        let pts: Vec<V3> = (0..41 * 41)
+            .map(|k| V3::new((k % 41) as f64 * 0.025 - 0.5, (k / 41) as f64 * 0.025 - 0.5, 0.0))
+            .collect();
+        let nrm = vec![V3::z(); pts.len()];
+        (pts, nrm)
+    }
+
     #[test]
     fn particle_inside_the_wall_is_put_back_without_its_velocity_into_it() {
-        let pts = (0..41 * 41)
-            .map(|k| V3::new((k % 41) as f64 * 0.025 - 0.5, (k / 41) as f64 * 0.025 - 0.5, 0.0))
-            .collect::<Vec<_>>();
-        let nrm = vec![V3::z(); pts.len()];
+        let (pts, nrm) = unit_plate();
         let wall = SurfaceWall::new("floor", pts, nrm, V3::zeros(), 0.1, 0.4, |r| {
             r.x.abs() < 0.5 && r.y.abs() < 0.5
         })
@@ -308,10 +314,7 @@ mod tests {
     /// A towed wall carries its ghosts, mirror points and the solid side along, with its velocity.
     #[test]
     fn towed_wall_carries_its_ghosts_along() {
-        let pts = (0..41 * 41)
-            .map(|k| V3::new((k % 41) as f64 * 0.025 - 0.5, (k / 41) as f64 * 0.025 - 0.5, 0.0))
-            .collect::<Vec<_>>();
-        let nrm = vec![V3::z(); pts.len()];
+        let (pts, nrm) = unit_plate();
         let v = V3::new(-1.0, 0.0, 0.5);
         let wall = SurfaceWall::new("floor", pts, nrm, V3::zeros(), 0.1, 0.4, |_| true)
             .unwrap()
