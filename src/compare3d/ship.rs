@@ -116,14 +116,17 @@ impl ShipTank {
         .map_err(anyhow::Error::msg)?;
         // Solid: the surface decides near it, the section polygon deeper inside.
         let polygons = |x: f64| section_polygon(&self.hull, x / l, 400);
-        let solid = |r: &V3, poly: &Option<Vec<[f64; 2]>>| match hull_wall.signed_distance(r) {
+        // `inside` (the polygon test) is asked only when the surface does not decide.
+        let solid = |r: &V3, inside: &dyn Fn(&V3) -> bool| match hull_wall.signed_distance(r) {
             Some((dist, _)) => dist < 0.0,
-            None => poly.as_ref().is_some_and(|p| polygon_contains(p, r.y / l, r.z / l)),
+            None => inside(r),
         };
+        let in_polygon =
+            |p: &Option<Vec<[f64; 2]>>, r: &V3| p.as_ref().is_some_and(|p| polygon_contains(p, r.y / l, r.z / l));
         let tank = BoxWall::new("tank", lo, hi, dx, support)
             .map_err(anyhow::Error::msg)?
             .with_ghosts(self.tank_ghosts)
-            .retain_ghosts(|_, mirror| !solid(mirror, &polygons(mirror.x)));
+            .retain_ghosts(|_, mirror| !solid(mirror, &|r| in_polygon(&polygons(r.x), r)));
 
         let eos = cfg.eos;
         let mut fluid = Fluid::default();
@@ -132,12 +135,13 @@ impl ShipTank {
         for i in 0..n[0] {
             let x = lo.x + (i as f64 + 0.5) * dx;
             let poly = polygons(x);
+            let inside = |r: &V3| in_polygon(&poly, r);
             for k in 0..nz_water {
                 let z = lo.z + (k as f64 + 0.5) * dx;
                 let rho = eos.density(RHO0 * G * (-z));
                 for j in 0..n[1] {
                     let r = V3::new(x, lo.y + (j as f64 + 0.5) * dx, z);
-                    if !solid(&r, &poly) {
+                    if !solid(&r, &inside) {
                         fluid.push(r, V3::zeros(), rho, rho * dx.powi(3), -z);
                     }
                 }
