@@ -28,6 +28,9 @@ pub struct SurfaceWall {
     cells: HashMap<[i64; 3], Vec<u32>>,
     ds: f64,
     support: f64,
+    /// The samples' bounding box (m).
+    lo: V3,
+    hi: V3,
     /// Ghost geometry at t = 0.
     base: GhostGeometry<3>,
     /// The wall's translation (a towed hull); still by default.
@@ -64,6 +67,11 @@ impl SurfaceWall {
         for (k, p) in points.iter().enumerate() {
             cells.entry(cell_of(p, support)).or_default().push(k as u32);
         }
+        let (mut lo, mut hi) = (V3::repeat(f64::INFINITY), V3::repeat(f64::NEG_INFINITY));
+        for p in &points {
+            lo = lo.inf(p);
+            hi = hi.sup(p);
+        }
         let mut wall = SurfaceWall {
             name: name.to_string(),
             points,
@@ -71,14 +79,11 @@ impl SurfaceWall {
             cells,
             ds,
             support,
+            lo,
+            hi,
             base: GhostGeometry::default(),
             motion: RigidMotion::Fixed,
         };
-        let (mut lo, mut hi) = (V3::repeat(f64::INFINITY), V3::repeat(f64::NEG_INFINITY));
-        for p in &wall.points {
-            lo = lo.inf(p);
-            hi = hi.sup(p);
-        }
         let first = |a: usize| ((lo[a] - support - origin[a]) / ds - 0.5).floor() as i64;
         let last = |a: usize| ((hi[a] + support - origin[a]) / ds - 0.5).ceil() as i64;
         for k in first(2)..=last(2) {
@@ -117,11 +122,16 @@ impl SurfaceWall {
     /// The distance from `r` to the surface's tangent plane at the nearest sample, negative on the solid side,
     /// with that sample's normal; `None` if no sample is within the kernel support. The wall at t = 0.
     pub fn signed_distance(&self, r: &V3) -> Option<(f64, V3)> {
+        // Beyond the samples' box grown by the support no sample is within reach (most of a tank's particles).
+        if (0..3).any(|a| r[a] < self.lo[a] - self.support || r[a] > self.hi[a] + self.support) {
+            return None;
+        }
         let c = cell_of(r, self.support);
-        // The nearest samples: several when samples coincide on a crease (a keel or a stem line sampled from
-        // both sides, each with its own normal).
-        let mut best = f64::INFINITY;
-        let mut nearest: Vec<u32> = Vec::with_capacity(2);
+        // The nearest sample (d², signed distance, index). Where samples coincide on a crease (a keel or a stem
+        // line sampled from both sides, each with its own normal), a convex solid: a point is solid only if
+        // it is behind every face that meets there, so the largest signed distance counts, and among equal
+        // ones the lowest index (whatever the visiting order).
+        let mut best: Option<(f64, f64, u32)> = None;
         for dz in -1..=1 {
             for dy in -1..=1 {
                 for dx in -1..=1 {
@@ -129,31 +139,22 @@ impl SurfaceWall {
                         continue;
                     };
                     for &k in list {
-                        let d2 = (r - self.points[k as usize]).norm_squared();
-                        if d2 < best {
-                            best = d2;
-                            nearest.clear();
-                            nearest.push(k);
-                        } else if d2 == best {
-                            nearest.push(k);
+                        let rel = r - self.points[k as usize];
+                        let d2 = rel.norm_squared();
+                        let d = rel.dot(&self.normals[k as usize]);
+                        let better = match best {
+                            None => true,
+                            Some((b2, bd, bk)) => d2 < b2 || (d2 == b2 && (d > bd || (d == bd && k < bk))),
+                        };
+                        if better {
+                            best = Some((d2, d, k));
                         }
                     }
                 }
             }
         }
-        if best >= self.support * self.support {
-            return None;
-        }
-        // On a crease of a convex solid a point is solid only if it is behind every face that meets there:
-        // the largest signed distance (ties taken in index order, whatever the visiting order).
-        nearest.sort_unstable();
-        nearest
-            .iter()
-            .map(|&k| {
-                let n = self.normals[k as usize];
-                ((r - self.points[k as usize]).dot(&n), n)
-            })
-            .reduce(|a, b| if b.0 > a.0 { b } else { a })
+        let (d2, d, k) = best?;
+        (d2 < self.support * self.support).then(|| (d, self.normals[k as usize]))
     }
 
     /// Whether `r` lies on the solid side within the kernel support of the surface.
