@@ -1,8 +1,8 @@
 //! The 3D ship scene (issue #31): any hull the 2D+t mode reads, as a 3D wall of fixed ghosts
 //! ([`crate::sph::surface_wall::SurfaceWall`] on the same spline surface, [`crate::geometry::hull_solid`]), in a
 //! tank that is the 2D+t scene extruded along x: half width 4 B from the centre plane (a free-slip symmetry plane,
-//! port–starboard symmetry), depth 2 D, on the lattice of the fluid. This first brick holds the hull at rest
-//! (U = 0) in still water: the check that the curved 3D wall holds a fluid at rest before the ship moves.
+//! port–starboard symmetry), depth 2 D, on the lattice of the fluid; the hull still (`validate hull-at-rest`) or
+//! towed ([`ShipTank::motion`], [`super::towed_ship`]).
 //!
 //! How the walls share the lattice: the hull's ghosts are the nodes on the solid side of its surface within
 //! the kernel support, on both sides of the centre plane (the mirrored hull gives the ghosts beyond the
@@ -12,6 +12,7 @@
 use crate::geometry::hull_solid::{oriented_points, polygon_contains, section_polygon};
 use crate::geometry::surface::HullSurface;
 use crate::sph::body_force::BodyForce;
+use crate::sph::boundary::RigidMotion;
 use crate::sph::box_wall::BoxWall;
 use crate::sph::particles::Fluid;
 use crate::sph::polyline_wall::GhostKind;
@@ -41,6 +42,8 @@ pub struct ShipTank {
     /// fluid ([`GhostKind::Images`], which hold the 3D still tank's hydrostatic pressure where fixed ghosts let
     /// it creep at coarse spacings, docs/reference/method.md "Three dimensions").
     pub tank_ghosts: GhostKind,
+    /// The hull's motion: still (the default) or towed ([`RigidMotion::Ramp`], `towed_ship`).
+    pub motion: RigidMotion<3>,
     /// Sound speed c0/√(g D): 10 keeps the density within about 1 % at the keel at rest (Mach 0.1 for a flow
     /// of √(g D)).
     pub c0_over_sqrt_gd: f64,
@@ -70,6 +73,7 @@ impl ShipTank {
             ahead_over_l: ahead,
             behind_over_l: behind,
             tank_ghosts: GhostKind::Fixed,
+            motion: RigidMotion::Fixed,
             c0_over_sqrt_gd: 10.0,
         }
     }
@@ -113,7 +117,8 @@ impl ShipTank {
             support,
             |r| r.x > lo.x && r.x < hi.x && r.z > lo.z && r.y < hi.y,
         )
-        .map_err(anyhow::Error::msg)?;
+        .map_err(anyhow::Error::msg)?
+        .with_motion(self.motion);
         // Solid: the surface decides near it, the section polygon deeper inside.
         let polygons = |x: f64| section_polygon(&self.hull, x / l, 400);
         // `inside` (the polygon test) is asked only when the surface does not decide.

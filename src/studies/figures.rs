@@ -6,8 +6,9 @@
 use super::collect::RESOLVED_JET_PARTICLES;
 use super::runner::{case_dir, CaseRecord};
 use crate::analysis::contour;
+use crate::analysis::wave_pattern::eta_field;
 use crate::io::csv_table::Table;
-use crate::io::plot::{self, Field, ScatterPanel, Series, Style};
+use crate::io::plot::{self, ScatterPanel, Series, Style};
 use crate::reference::PublishedJet;
 use crate::twodt::run::PlungeMetrics;
 use std::path::{Path, PathBuf};
@@ -311,37 +312,6 @@ fn wave_patterns(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::R
         files.push(path);
     }
     Ok(files)
-}
-
-/// Regular grid of η from (x, y, η) rows: one column per distinct x (outputs), y bins of the run's spacing.
-fn eta_field(x: &[f64], y: &[f64], eta: &[f64]) -> Option<Field> {
-    let mut xs: Vec<f64> = x.to_vec();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    let mut ys: Vec<f64> = y.to_vec();
-    ys.sort_by(f64::total_cmp);
-    ys.dedup();
-    if xs.len() < 2 || ys.len() < 2 {
-        return None;
-    }
-    let dx = (xs[xs.len() - 1] - xs[0]) / (xs.len() - 1) as f64;
-    let dy = ys[1] - ys[0];
-    let ny = ((ys[ys.len() - 1] - ys[0]) / dy).round() as usize + 1;
-    let mut values = vec![vec![f64::NAN; ny]; xs.len()];
-    for k in 0..x.len() {
-        let i = xs.partition_point(|v| *v < x[k]);
-        let j = ((y[k] - ys[0]) / dy).round() as usize;
-        if i < xs.len() && j < ny {
-            values[i][j] = eta[k];
-        }
-    }
-    Some(Field {
-        x0: xs[0],
-        dx,
-        y0: ys[0],
-        dy,
-        values,
-    })
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ mod chart;
 mod converge;
 mod hull;
 mod options;
+mod ship;
 mod slab;
 mod study;
 mod twodt;
@@ -59,6 +60,11 @@ enum Command {
     /// walls at the same spacing; prints how far the 3D front and wall pressures are from the 2D ones and
     /// what the third dimension costs; writes slab.csv.
     Slab(slab::SlabArgs),
+    /// The 3D mode's ship: a hull file's surface as a 3D wall, towed from rest to U = Fr √(gL) through the 2D+t
+    /// scene's tank extruded along x until its bow crest is steady; its wave pattern η(x, y) (ship3d_eta.csv, a
+    /// PNG map), the bow's history (bow.csv), and with `--twodt` the 2D+t map beside it, their difference and
+    /// the x/L from which they agree within 0.1 D (agreement.csv).
+    Ship(ship::ShipArgs),
     /// Hull geometry: check a hull file, import one from STL, generate the Athena or Alliance approximation,
     /// draw a hull, or write the Wigley hull.
     Hull {
@@ -104,6 +110,7 @@ fn run() -> anyhow::Result<ExitCode> {
         Command::Wedge(a) => done(a.run()),
         Command::Bench(a) => done(a.run()),
         Command::Slab(a) => done(a.run()),
+        Command::Ship(a) => done(a.run()),
         Command::Hull { action } => done(action.run()),
         Command::BenchOne(a) => done(a.run()),
         Command::Cases(a) => done(a.run()),

@@ -1,0 +1,101 @@
+//! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
+
+use bowwave::analysis::wave_pattern::eta_field;
+use bowwave::compare3d::towed_ship::{self, TowedShip};
+use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
+use bowwave::io::atomic::write_atomic;
+use bowwave::io::csv_table::Table;
+use clap::Args;
+use std::path::PathBuf;
+
+#[derive(Args)]
+pub struct ShipArgs {
+    /// Hull offsets file (CSV, see docs/reference/hull-format.md); the Wigley hull's exact form by default.
+    #[arg(long, default_value = "hulls/wigley.csv")]
+    pub hull: PathBuf,
+    /// Froude number U/√(gL).
+    #[arg(long, default_value_t = 0.5)]
+    pub fr: f64,
+    /// Particles over the draft, D/dx (D/dx 5 on the Wigley hull: about 80 000 particles, some 20–40 min on 2 cores).
+    #[arg(long, default_value_t = 5.0)]
+    pub res: f64,
+    /// The hull accelerates from rest to U over this distance, in L (a smooth ramp, zero acceleration at both ends).
+    #[arg(long, default_value_t = 0.25)]
+    pub ramp: f64,
+    /// The longest distance travelled, in L; the run stops earlier once the bow crest is steady.
+    #[arg(long, default_value_t = 2.5)]
+    pub travel: f64,
+    /// The shortest distance travelled, in L, before the run may stop: the pattern along the whole hull must
+    /// have left the start behind (the stern passes the stem's starting point after 1 L).
+    #[arg(long, default_value_t = 1.5)]
+    pub min_travel: f64,
+    /// The bow is steady when its crest height moved by less than this, in D, over the last `--steady-over` L.
+    #[arg(long, default_value_t = 0.02)]
+    pub steady_tol: f64,
+    /// The stretch of travel (L) over which the bow crest must stay within `--steady-tol`.
+    #[arg(long, default_value_t = 0.25)]
+    pub steady_over: f64,
+    /// A `bowwave twodt` output folder of the same hull and Froude number (its eta.csv): the 2D+t map is drawn
+    /// beside the 3D one, their difference mapped, and the x/L from which they agree within 0.1 D printed.
+    /// Run it at the same spacing: `bowwave twodt --hull H --fr F --dx (D/L)/res --ratio 1 --until transom`.
+    #[arg(long)]
+    pub twodt: Option<PathBuf>,
+    /// Output folder (default out/ship-NAME-frF-resR).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// No progress bars.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+impl ShipArgs {
+    pub fn run(self) -> anyhow::Result<()> {
+        let offsets = HullOffsets::read(&self.hull)?;
+        let name = offsets.meta.name.clone();
+        let hull = HullSurface::new(&offsets);
+        // The 2D+t map first: a wrong folder fails before an hour of 3D.
+        let twodt = match &self.twodt {
+            None => None,
+            Some(dir) => {
+                let path = dir.join("eta.csv");
+                let t = Table::read(&path)?;
+                let col = |c: &str| {
+                    t.column(c)
+                        .ok_or_else(|| anyhow::anyhow!("{}: no column '{c}', expected a twodt eta.csv", path.display()))
+                };
+                let (x, y, e) = (col("x_over_l")?, col("y_over_l")?, col("eta_over_d")?);
+                Some(eta_field(&x, &y, &e).ok_or_else(|| {
+                    anyhow::anyhow!(
+                        "{}: fewer than two x/L or y/L values, expected a wave pattern",
+                        path.display()
+                    )
+                })?)
+            }
+        };
+        let mut opts = TowedShip::new(hull.clone(), self.fr, self.res);
+        opts.ramp_over_l = self.ramp;
+        opts.max_travel_over_l = self.travel;
+        opts.min_travel_over_l = self.min_travel;
+        opts.steady_tolerance_over_d = self.steady_tol;
+        opts.steady_over_l = self.steady_over;
+        let out = self
+            .out
+            .unwrap_or_else(|| PathBuf::from(format!("out/ship-{name}-fr{}-res{}", self.fr, self.res)));
+        std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+        let r = towed_ship::run(&opts, !self.quiet)?;
+        let x_end = hull.x_range.1 - hull.x_range.0;
+        let c = twodt.as_ref().map(|f| towed_ship::compare(&r.eta, f, self.fr, x_end));
+        for (file, t) in towed_ship::tables(&r, c.as_ref()) {
+            let path = out.join(file);
+            t.write(&path)
+                .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+        }
+        towed_ship::plots(&r, twodt.as_ref().zip(c.as_ref()), &out)?;
+        let text = towed_ship::summary(&r, c.as_ref());
+        write_atomic(&out.join("summary.txt"), text.as_bytes())?;
+        print!("{text}");
+        println!("written: {}", out.display());
+        anyhow::ensure!(r.blow_up.is_none(), "the 3D run blew up (outputs kept)");
+        Ok(())
+    }
+}

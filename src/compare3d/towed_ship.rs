@@ -1,0 +1,478 @@
+//! The ship in steady forward motion in 3D (issue #31): the hull of [`super::ship`] towed through the tank at
+//! U = Fr √(gL), from rest with a smooth ramp ([`RigidMotion::Ramp`]), until the bow region is steady; its wave
+//! pattern η(x, y) in the ship's frame, beside the 2D+t solution of the same hull at the same spacing.
+//!
+//! Why towed, not fixed in a current: a towed hull needs a longer tank (the distance it travels) but no open
+//! boundary, where a fixed hull needs an inflow and an outflow through the free surface, which 3D SPH codes keep
+//! stable only with damping zones that reflect waves back. The tank's faces are images of the fluid
+//! ([`GhostKind::Images`]): they follow the moving keel on the centre plane without a per-stage test of which
+//! symmetry-plane ghost lies inside the hull, and they held the hull at rest better than fixed tank ghosts
+//! (`validate hull-at-rest`). The tank is the 2D+t scene's (half width 4 B, depth 2 D): not open water, a channel
+//! whose depth Froude number U/√(g 2D) may exceed 1 (then no transverse waves), the same for both models.
+//!
+//! Frames: x from the stem, positive aft, in L (2D+t's x = U t + x0); y from the centre plane; η/D.
+
+use super::ship::{ShipScene, ShipTank};
+use crate::analysis::contour;
+use crate::analysis::wave_pattern::{eta_field_3d, sample, Bins};
+use crate::driver::progress::{Progress, Status};
+use crate::driver::{drive, Flow, Outcome, Watch};
+use crate::geometry::hydrostatics::section_hydro;
+use crate::geometry::surface::HullSurface;
+use crate::io::csv_table::Table;
+use crate::io::plot::{self, Field};
+use crate::sph::boundary::RigidMotion;
+use crate::sph::polyline_wall::GhostKind;
+use crate::sph::solver::BlowUp;
+use crate::twodt::scene::expected_max_speed;
+use nalgebra::Vector3;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+const G: f64 = 9.81;
+
+/// A towed-ship run, in units of the hull's L, D and of U.
+#[derive(Clone, Debug)]
+pub struct TowedShip {
+    pub hull: HullSurface,
+    pub fr: f64,
+    /// Particles over the draft, D/dx.
+    pub d_over_dx: f64,
+    /// Ramp from rest to U over this distance (L): the smooth start of r(τ) = τ²(3 − 2τ).
+    pub ramp_over_l: f64,
+    /// The shortest distance travelled (L): the whole hull's pattern, not only the bow's, must have left the start
+    /// behind before the map is compared (the stern passes the stem's starting point after 1 L).
+    pub min_travel_over_l: f64,
+    /// The longest distance travelled (L); the run stops earlier once the bow is steady past the shortest.
+    pub max_travel_over_l: f64,
+    /// The bow is steady when its crest height changed by less than this (in D) over the last
+    /// [`TowedShip::steady_over_l`] travelled.
+    pub steady_tolerance_over_d: f64,
+    pub steady_over_l: f64,
+    /// Interval between two bow samples (L travelled).
+    pub sample_over_l: f64,
+    /// Water behind the stern at the start (L); ahead of the stem the tank holds the longest travel plus 0.5 L.
+    pub behind_over_l: f64,
+}
+
+impl TowedShip {
+    /// The defaults: ramp over 0.25 L, at least 1.5 L and at most 2.5 L travelled, steady within 0.02 D over the last 0.25 L, samples
+    /// every 0.05 L, 0.5 L of water behind the stern.
+    pub fn new(hull: HullSurface, fr: f64, d_over_dx: f64) -> Self {
+        TowedShip {
+            hull,
+            fr,
+            d_over_dx,
+            ramp_over_l: 0.25,
+            min_travel_over_l: 1.5,
+            max_travel_over_l: 2.5,
+            steady_tolerance_over_d: 0.02,
+            steady_over_l: 0.25,
+            sample_over_l: 0.05,
+            behind_over_l: 0.5,
+        }
+    }
+}
+
+/// What the towed run leaves: the wave pattern at the end and the bow's history.
+pub struct TowedResult {
+    pub fr: f64,
+    pub dx_over_l: f64,
+    pub c0_over_sqrt_gl: f64,
+    pub particles: usize,
+    pub hull_ghosts: usize,
+    pub steps: u64,
+    pub wall_seconds: f64,
+    /// Distance travelled at the end (L).
+    pub travel_over_l: f64,
+    /// (travel / L, bow crest η/D, its x/L from the stem) at every sample.
+    pub bow: Vec<(f64, f64, f64)>,
+    /// Whether the bow met the steadiness tolerance before the longest travel.
+    pub steady: bool,
+    /// η/D in the ship's frame at the end: x/L from the stem, y/L from the centre plane.
+    pub eta: Field,
+    /// The diagnosis, if the run blew up (the result then holds what it had).
+    pub blow_up: Option<BlowUp>,
+}
+
+/// The bow region where the crest is watched (x/L from the stem).
+pub const BOW_REGION: (f64, f64) = (-0.05, 0.5);
+
+/// Runs the towed ship.
+pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<TowedResult> {
+    anyhow::ensure!(
+        opts.fr.is_finite() && opts.fr > 0.0,
+        "ship: Froude number must be positive, got {}",
+        opts.fr
+    );
+    anyhow::ensure!(
+        opts.d_over_dx.is_finite() && opts.d_over_dx >= 2.0,
+        "ship: resolution D/dx must be a number ≥ 2, got {}",
+        opts.d_over_dx
+    );
+    anyhow::ensure!(
+        opts.ramp_over_l > 0.0
+            && opts.min_travel_over_l >= opts.ramp_over_l
+            && opts.max_travel_over_l >= opts.min_travel_over_l,
+        "ship: expected 0 < ramp ({} L) ≤ shortest travel ({} L) ≤ longest travel ({} L)",
+        opts.ramp_over_l,
+        opts.min_travel_over_l,
+        opts.max_travel_over_l
+    );
+    let hull = &opts.hull;
+    let (l, d) = (hull.meta.length_m, hull.meta.draft_m);
+    let d_over_l = d / l;
+    let dx_over_l = d_over_l / opts.d_over_dx;
+    let u = opts.fr * (G * l).sqrt();
+    // The 2D+t rule (`docs/decisions/twodt-sound-speed.md`): 10 × the expected largest speed.
+    let c0_over_sqrt_gl = 10.0 * expected_max_speed(hull, opts.fr, hull.x_range.0, hull.x_range.1, d_over_l);
+    // Travel s(t) of the ramp: U (t − T/2) after it, so T = 2 × its length / U.
+    let ramp_time = 2.0 * opts.ramp_over_l * l / u;
+    let mut tank = ShipTank::new(
+        hull.clone(),
+        dx_over_l,
+        opts.max_travel_over_l + 0.5,
+        opts.behind_over_l,
+    );
+    tank.tank_ghosts = GhostKind::Images;
+    tank.c0_over_sqrt_gd = c0_over_sqrt_gl / d_over_l.sqrt();
+    let motion = RigidMotion::Ramp {
+        velocity: Vector3::new(-u, 0.0, 0.0),
+        time: ramp_time,
+    };
+    tank.motion = motion;
+    let ShipScene {
+        mut sim,
+        hull_ghosts,
+        lo,
+        hi,
+        ..
+    } = tank.build()?;
+    let dx = sim.cfg.dx;
+    let stem = hull.x_range.0;
+    // The map: bins of 2 dx from 0.3 L ahead of the stem to the stern, across the tank.
+    let bin = 2.0 * dx_over_l;
+    let bins = Bins {
+        x0: -0.3,
+        y0: 0.5 * bin,
+        bin,
+        nx: ((hull.x_range.1 - stem + 0.3) / bin).ceil() as usize + 1,
+        ny: (((hi.y - lo.y) / l) / bin).floor() as usize,
+    };
+    // The hull's waterplane, as the 2D+t η(y) leaves out the bins inside the section's waterline.
+    let half_breadth = |x: f64| {
+        if x <= 0.0 || x >= hull.x_range.1 - stem {
+            0.0
+        } else {
+            section_hydro(hull, x + stem, 200).half_breadth_wl
+        }
+    };
+    let waterline: Vec<f64> = (0..bins.nx).map(|i| half_breadth(bins.x0 + i as f64 * bin)).collect();
+    let map = |sim: &crate::sph::solver::Simulation<3>| {
+        let shift = motion.displacement(sim.time).x;
+        eta_field_3d(
+            sim.fluid.pos.iter().map(|p| ((p.x - shift) / l - stem, p.y / l, p.z)),
+            bins,
+            dx,
+            d,
+            |x, y| {
+                let i = ((x - bins.x0) / bin).round() as usize;
+                y < waterline[i.min(bins.nx - 1)]
+            },
+        )
+    };
+    let travel = |t: f64| -motion.displacement(t).x / l;
+    let mut bow: Vec<(f64, f64, f64)> = vec![];
+    let mut steady = false;
+    let mut next_sample = opts.ramp_over_l;
+    let (tol, window, every, min_travel, max_travel) = (
+        opts.steady_tolerance_over_d,
+        opts.steady_over_l,
+        opts.sample_over_l,
+        opts.min_travel_over_l,
+        opts.max_travel_over_l,
+    );
+    let mut watch = Watch(|sim: &mut crate::sph::solver::Simulation<3>| {
+        let s = travel(sim.time);
+        if s >= next_sample {
+            next_sample += every;
+            let f = map(sim);
+            let mut crest = (f64::NEG_INFINITY, f64::NAN);
+            for (i, col) in f.values.iter().enumerate() {
+                let x = f.x0 + i as f64 * f.dx;
+                if x < BOW_REGION.0 || x > BOW_REGION.1 {
+                    continue;
+                }
+                for v in col.iter().filter(|v| v.is_finite()) {
+                    if *v > crest.0 {
+                        crest = (*v, x);
+                    }
+                }
+            }
+            bow.push((s, crest.0, crest.1));
+            // Steady: the crest within `tol` of its value `window` L of travel ago, after the ramp.
+            let back = bow.iter().rev().find(|b| b.0 <= s - window + 1e-9);
+            if let Some(b) = back {
+                if b.0 >= opts.ramp_over_l - 1e-9 && s >= min_travel && (crest.0 - b.1).abs() < tol {
+                    steady = true;
+                    return Ok(Flow::Stop);
+                }
+            }
+        }
+        Ok(if s >= max_travel { Flow::Stop } else { Flow::Step })
+    });
+    let mut bar = Progress::new("ship ", progress, None, |sim: &crate::sph::solver::Simulation<3>| {
+        Status {
+            fraction: travel(sim.time) / max_travel,
+            text: format!("{:.3} L travelled", travel(sim.time)),
+            steps: sim.steps,
+        }
+    });
+    let clock = Instant::now();
+    let outcome = drive(&mut sim, &mut [&mut watch, &mut bar])?;
+    let blow_up = match outcome {
+        Outcome::BlewUp(b) => Some(b),
+        _ => None,
+    };
+    Ok(TowedResult {
+        fr: opts.fr,
+        dx_over_l,
+        c0_over_sqrt_gl,
+        particles: sim.n_fluid(),
+        hull_ghosts,
+        steps: sim.steps,
+        wall_seconds: clock.elapsed().as_secs_f64(),
+        travel_over_l: travel(sim.time),
+        bow,
+        steady,
+        eta: map(&sim),
+        blow_up,
+    })
+}
+
+/// The 3D and 2D+t wave patterns compared column by column of the 3D map.
+pub struct Comparison {
+    /// η_3D − η_2D+t over D, on the 3D map's grid (NaN where either is missing).
+    pub difference: Field,
+    /// (x/L, largest |Δη|/D over the column, Fr_x = Fr/√(x/L)) for each column with both.
+    pub columns: Vec<(f64, f64, f64)>,
+    /// The first x/L from which every column up to the stern agrees within the tolerance (None: none does).
+    pub agree_from: Option<f64>,
+}
+
+/// The agreement the issue asks for: η within 10 % of D.
+pub const AGREEMENT_OVER_D: f64 = 0.1;
+
+/// Compares the 3D map with the 2D+t one (`eta.csv`'s field, x/L from the stem), from x/L 0 to the stern `x_end`.
+pub fn compare(three: &Field, twodt: &Field, fr: f64, x_end: f64) -> Comparison {
+    let mut values = three.values.clone();
+    let mut columns = vec![];
+    for (i, col) in values.iter_mut().enumerate() {
+        let x = three.x0 + i as f64 * three.dx;
+        let mut worst = f64::NAN;
+        for (j, v) in col.iter_mut().enumerate() {
+            let y = three.y0 + j as f64 * three.dy;
+            let other = sample(twodt, x, y);
+            *v = if v.is_finite() && other.is_finite() && x > 0.0 {
+                *v - other
+            } else {
+                f64::NAN
+            };
+            if v.is_finite() {
+                worst = if worst.is_nan() { v.abs() } else { worst.max(v.abs()) };
+            }
+        }
+        if worst.is_finite() && x <= x_end {
+            columns.push((x, worst, fr / x.sqrt()));
+        }
+    }
+    let agree_from = columns
+        .iter()
+        .rposition(|c| c.1 >= AGREEMENT_OVER_D)
+        .map_or(columns.first().map(|c| c.0), |k| columns.get(k + 1).map(|c| c.0));
+    Comparison {
+        difference: Field {
+            x0: three.x0,
+            dx: three.dx,
+            y0: three.y0,
+            dy: three.dy,
+            values,
+        },
+        columns,
+        agree_from,
+    }
+}
+
+/// The result's tables: `ship3d_eta.csv` (x_over_l, y_over_l, eta_over_d of the final map), `bow.csv` (the
+/// crest's history) and, with a 2D+t map, `agreement.csv` (per column: x/L, largest |Δη|/D, Fr_x).
+pub fn tables(r: &TowedResult, c: Option<&Comparison>) -> Vec<(&'static str, Table)> {
+    let cols = |names: &[&str]| names.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    let mut eta = Table::new(cols(&["x_over_l", "y_over_l", "eta_over_d"]));
+    for (i, col) in r.eta.values.iter().enumerate() {
+        for (j, v) in col.iter().enumerate() {
+            if v.is_finite() {
+                eta.push(vec![r.eta.x0 + i as f64 * r.eta.dx, r.eta.y0 + j as f64 * r.eta.dy, *v]);
+            }
+        }
+    }
+    let mut bow = Table::new(cols(&["travel_over_l", "crest_over_d", "crest_x_over_l"]));
+    for b in &r.bow {
+        bow.push(vec![b.0, b.1, b.2]);
+    }
+    let mut out = vec![("ship3d_eta.csv", eta), ("bow.csv", bow)];
+    if let Some(c) = c {
+        let mut t = Table::new(cols(&["x_over_l", "max_abs_diff_over_d", "fr_x"]));
+        for col in &c.columns {
+            t.push(vec![col.0, col.1, col.2]);
+        }
+        out.push(("agreement.csv", t));
+    }
+    out
+}
+
+/// The maps as PNG: the 3D pattern, and with a 2D+t map that one and the difference, each with contours every
+/// 0.1 D and Fr_x along the top.
+pub fn plots(r: &TowedResult, twodt: Option<(&Field, &Comparison)>, out: &Path) -> anyhow::Result<Vec<PathBuf>> {
+    let fr = r.fr;
+    let ticks: Vec<(f64, String)> = [3.0, 2.0, 1.5, 1.2, 1.0, 0.8, 0.7, 0.6]
+        .iter()
+        .map(|&fx: &f64| ((fr / fx).powi(2), format!("Fr_x {fx}")))
+        .collect();
+    let draw = |name: &str, title: String, f: &Field, range: (f64, f64)| -> anyhow::Result<PathBuf> {
+        let segs: Vec<[(f64, f64); 2]> = (-10..=15)
+            .filter(|k| *k != 0)
+            .flat_map(|k| {
+                contour::segments(
+                    &contour::Grid {
+                        values: &f.values,
+                        x0: f.x0,
+                        dx: f.dx,
+                        y0: f.y0,
+                        dy: f.dy,
+                    },
+                    0.1 * k as f64,
+                )
+            })
+            .collect();
+        let path = out.join(name);
+        plot::field_map(
+            &path,
+            &title,
+            ("x / L from the stem", "y / L from the centre plane"),
+            f,
+            range,
+            &segs,
+            &ticks,
+            (1400, 700),
+        )?;
+        Ok(path)
+    };
+    let mut files = vec![draw(
+        "wave_pattern_3d.png",
+        format!(
+            "3D towed ship, Fr = {fr}, dx/L = {:.2e}: η/D (contours every 0.1 D)",
+            r.dx_over_l
+        ),
+        &r.eta,
+        (-0.3, 1.0),
+    )?];
+    if let Some((two, c)) = twodt {
+        files.push(draw(
+            "wave_pattern_2dt.png",
+            format!("2D+t, Fr = {fr}: η/D (contours every 0.1 D)"),
+            two,
+            (-0.3, 1.0),
+        )?);
+        files.push(draw(
+            "wave_pattern_difference.png",
+            format!("3D − 2D+t, Fr = {fr}: Δη/D (contours every 0.1 D)"),
+            &c.difference,
+            (-0.5, 0.5),
+        )?);
+    }
+    Ok(files)
+}
+
+/// A short report of the run and, with a 2D+t map, the verdict.
+pub fn summary(r: &TowedResult, c: Option<&Comparison>) -> String {
+    let mut s = format!(
+        "3D towed ship, Fr {}: dx/L {:.3e}, {} particles, {} hull ghosts, c0 {:.2} √(gL), {} steps, {:.0} s; \
+         {:.2} L travelled\n",
+        r.fr, r.dx_over_l, r.particles, r.hull_ghosts, r.c0_over_sqrt_gl, r.steps, r.wall_seconds, r.travel_over_l
+    );
+    match r.bow.last() {
+        Some(b) => {
+            s += &format!(
+                "bow crest {:.3} D at x/L {:.3}; {}\n",
+                b.1,
+                b.2,
+                if r.steady {
+                    "steady: it changed by less than the tolerance over the last stretch".to_string()
+                } else {
+                    "NOT steady by the end of the travel".to_string()
+                }
+            )
+        }
+        None => s += "no bow sample (the ramp did not end)\n",
+    }
+    if let Some(b) = &r.blow_up {
+        s += &format!("blew up: {b}\n");
+    }
+    if let Some(c) = c {
+        s += &match c.agree_from {
+            Some(x) => format!(
+                "3D and 2D+t agree within {AGREEMENT_OVER_D} D in η from x/L {x:.3} (Fr_x {:.2}) to the stern\n",
+                r.fr / x.sqrt()
+            ),
+            None => format!("3D and 2D+t do not agree within {AGREEMENT_OVER_D} D in η at the stern's column\n"),
+        };
+        s += "x/L     max|Δη|/D   Fr_x\n";
+        for col in &c.columns {
+            s += &format!("{:6.3}  {:9.3}  {:6.2}\n", col.0, col.1, col.2);
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn field(f: impl Fn(f64, f64) -> f64, x0: f64, dx: f64, nx: usize, ny: usize) -> Field {
+        Field {
+            x0,
+            dx,
+            y0: 0.5 * dx,
+            dy: dx,
+            values: (0..nx)
+                .map(|i| (0..ny).map(|j| f(x0 + i as f64 * dx, (j as f64 + 0.5) * dx)).collect())
+                .collect(),
+        }
+    }
+
+    /// Two maps that differ by 0.3 D ahead of x/L 0.4 and by 0.05 D after it agree from the first column past
+    /// 0.4, and the difference map carries the difference.
+    #[test]
+    fn agreement_starts_after_the_last_column_off_by_more_than_a_tenth_of_d() {
+        let a = field(|x, y| (x * 3.0).sin() * y, -0.2, 0.05, 25, 10);
+        let b = field(
+            |x, y| (x * 3.0).sin() * y + if x < 0.4 { 0.3 } else { 0.05 },
+            -0.2,
+            0.01,
+            121,
+            50,
+        );
+        let c = compare(&a, &b, 0.5, 1.0);
+        let from = c.agree_from.unwrap();
+        assert!((from - 0.4).abs() < 0.03, "agrees from {from}");
+        for (x, worst, fr_x) in &c.columns {
+            assert!(*x > 0.0);
+            assert!((fr_x - 0.5 / x.sqrt()).abs() < 1e-12);
+            let want = if *x < 0.4 { 0.3 } else { 0.05 };
+            assert!((worst - want).abs() < 0.02, "x {x}: {worst}");
+        }
+        // Nothing agrees: None.
+        let far = field(|_, _| 1.0, -0.2, 0.01, 121, 50);
+        assert_eq!(compare(&a, &far, 0.5, 1.0).agree_from, None);
+    }
+}
