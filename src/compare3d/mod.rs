@@ -5,4 +5,5 @@
 
 pub mod ship;
 pub mod slab;
+pub mod towed_checkpoint;
 pub mod towed_ship;

@@ -13,10 +13,11 @@
 //! Frames: x from the stem, positive aft, in L (2D+t's x = U t + x0); y from the centre plane; η/D.
 
 use super::ship::{ShipScene, ShipTank};
+use super::towed_checkpoint;
 use crate::analysis::contour;
 use crate::analysis::wave_pattern::{eta_field_3d, sample, Bins};
 use crate::driver::progress::{Progress, Status};
-use crate::driver::{drive, Flow, Outcome, Watch};
+use crate::driver::{drive, Ended, Flow, Halted, Outcome, Watch};
 use crate::geometry::hydrostatics::section_hydro;
 use crate::geometry::surface::HullSurface;
 use crate::io::csv_table::Table;
@@ -27,7 +28,7 @@ use crate::sph::solver::BlowUp;
 use crate::twodt::scene::expected_max_speed;
 use nalgebra::Vector3;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 const G: f64 = 9.81;
 
@@ -53,6 +54,22 @@ pub struct TowedShip {
     pub sample_over_l: f64,
     /// Water behind the stern at the start (L); ahead of the stem the tank holds the longest travel plus 0.5 L.
     pub behind_over_l: f64,
+    /// Where and how often to save the run's state, and when to stop with it saved (None: never).
+    pub checkpoint: Option<CheckpointPolicy>,
+}
+
+/// Checkpoints of a towed run ([`super::towed_checkpoint`]).
+#[derive(Clone, Debug)]
+pub struct CheckpointPolicy {
+    /// The run's folder: `checkpoint.bin` is read from it at the start (if it is of the same configuration) and
+    /// written to it.
+    pub dir: PathBuf,
+    /// Wall time between two saves.
+    pub every: Duration,
+    /// Save and stop once this session has used this much wall time.
+    pub wall_limit: Option<Duration>,
+    /// Save and stop once the run has taken this many steps (tests; jobs split by steps).
+    pub halt_at_step: Option<u64>,
 }
 
 impl TowedShip {
@@ -70,6 +87,7 @@ impl TowedShip {
             steady_over_l: 0.25,
             sample_over_l: 0.05,
             behind_over_l: 0.5,
+            checkpoint: None,
         }
     }
 }
@@ -98,8 +116,28 @@ pub struct TowedResult {
 /// The bow region where the crest is watched (x/L from the stem).
 pub const BOW_REGION: (f64, f64) = (-0.05, 0.5);
 
-/// Runs the towed ship.
-pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<TowedResult> {
+impl TowedShip {
+    /// What identifies the configuration (a checkpoint of another one is not resumed).
+    fn fingerprint(&self) -> String {
+        format!(
+            "{} fr {} D/dx {} ramp {} travel {}–{} steady {} over {} sample {} behind {}",
+            self.hull.meta.name,
+            self.fr,
+            self.d_over_dx,
+            self.ramp_over_l,
+            self.min_travel_over_l,
+            self.max_travel_over_l,
+            self.steady_tolerance_over_d,
+            self.steady_over_l,
+            self.sample_over_l,
+            self.behind_over_l
+        )
+    }
+}
+
+/// Runs the towed ship (or goes on from its checkpoint), until its bow is steady past the shortest travel or it
+/// reaches the longest; `Halted` when the checkpoint policy's wall-time limit stopped it with its state saved.
+pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult>> {
     anyhow::ensure!(
         opts.fr.is_finite() && opts.fr > 0.0,
         "ship: Froude number must be positive, got {}",
@@ -182,9 +220,24 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<TowedResult> {
         )
     };
     let travel = |t: f64| -motion.displacement(t).x / l;
-    let mut bow: Vec<(f64, f64, f64)> = vec![];
+    let fingerprint = opts.fingerprint();
+    let mut state = towed_checkpoint::Progress {
+        bow: vec![],
+        next_sample: opts.ramp_over_l,
+        wall_before: 0.0,
+    };
+    if let Some(c) = &opts.checkpoint {
+        let path = c.dir.join(towed_checkpoint::FILE);
+        if path.exists() {
+            if let Some(p) = towed_checkpoint::restore(&path, &fingerprint, &mut sim)? {
+                log::info!("{}: going on from {:.3} L travelled", path.display(), travel(sim.time));
+                state = p;
+            }
+        }
+    }
+    let wall_before = state.wall_before;
+    let state = std::cell::RefCell::new(state);
     let mut steady = false;
-    let mut next_sample = opts.ramp_over_l;
     let (tol, window, every, min_travel, max_travel) = (
         opts.steady_tolerance_over_d,
         opts.steady_over_l,
@@ -194,8 +247,9 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<TowedResult> {
     );
     let mut watch = Watch(|sim: &mut crate::sph::solver::Simulation<3>| {
         let s = travel(sim.time);
-        if s >= next_sample {
-            next_sample += every;
+        let mut st = state.borrow_mut();
+        if s >= st.next_sample {
+            st.next_sample += every;
             let f = map(sim);
             let mut crest = (f64::NEG_INFINITY, f64::NAN);
             for (i, col) in f.values.iter().enumerate() {
@@ -209,9 +263,9 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<TowedResult> {
                     }
                 }
             }
-            bow.push((s, crest.0, crest.1));
+            st.bow.push((s, crest.0, crest.1));
             // Steady: the crest within `tol` of its value `window` L of travel ago, after the ramp.
-            let back = bow.iter().rev().find(|b| b.0 <= s - window + 1e-9);
+            let back = st.bow.iter().rev().find(|b| b.0 <= s - window + 1e-9);
             if let Some(b) = back {
                 if b.0 >= opts.ramp_over_l - 1e-9 && s >= min_travel && (crest.0 - b.1).abs() < tol {
                     steady = true;
@@ -229,25 +283,53 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<TowedResult> {
         }
     });
     let clock = Instant::now();
-    let outcome = drive(&mut sim, &mut [&mut watch, &mut bar])?;
+    let mut last_save = Instant::now();
+    let mut saver = Watch(|sim: &mut crate::sph::solver::Simulation<3>| {
+        let Some(c) = &opts.checkpoint else {
+            return Ok(Flow::Step);
+        };
+        let halt = c.wall_limit.is_some_and(|w| clock.elapsed() >= w) || c.halt_at_step.is_some_and(|n| sim.steps >= n);
+        if halt || last_save.elapsed() >= c.every {
+            let path = c.dir.join(towed_checkpoint::FILE);
+            let mut st = state.borrow().clone();
+            st.wall_before = wall_before + clock.elapsed().as_secs_f64();
+            towed_checkpoint::save(&path, &fingerprint, sim, &st)?;
+            last_save = Instant::now();
+            if halt {
+                return Ok(Flow::Halt(Halted {
+                    at: format!("{:.3} L travelled", travel(sim.time)),
+                    steps: sim.steps,
+                    checkpoint: path,
+                }));
+            }
+        }
+        Ok(Flow::Step)
+    });
+    let outcome = drive(&mut sim, &mut [&mut watch, &mut bar, &mut saver])?;
     let blow_up = match outcome {
         Outcome::BlewUp(b) => Some(b),
-        _ => None,
+        Outcome::Halted(h) => return Ok(Ended::Halted(h)),
+        Outcome::Finished => None,
     };
-    Ok(TowedResult {
+    if let Some(c) = &opts.checkpoint {
+        // Finished: the checkpoint has served its purpose (results are kept, checkpoints are not).
+        let _ = std::fs::remove_file(c.dir.join(towed_checkpoint::FILE));
+    }
+    let bow = state.into_inner().bow;
+    Ok(Ended::Ran(TowedResult {
         fr: opts.fr,
         dx_over_l,
         c0_over_sqrt_gl,
         particles: sim.n_fluid(),
         hull_ghosts,
         steps: sim.steps,
-        wall_seconds: clock.elapsed().as_secs_f64(),
+        wall_seconds: wall_before + clock.elapsed().as_secs_f64(),
         travel_over_l: travel(sim.time),
         bow,
         steady,
         eta: map(&sim),
         blow_up,
-    })
+    }))
 }
 
 /// The 3D and 2D+t wave patterns compared column by column of the 3D map.

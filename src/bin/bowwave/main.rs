@@ -110,7 +110,7 @@ fn run() -> anyhow::Result<ExitCode> {
         Command::Wedge(a) => done(a.run()),
         Command::Bench(a) => done(a.run()),
         Command::Slab(a) => done(a.run()),
-        Command::Ship(a) => done(a.run()),
+        Command::Ship(a) => a.run(),
         Command::Hull { action } => done(action.run()),
         Command::BenchOne(a) => done(a.run()),
         Command::Cases(a) => done(a.run()),

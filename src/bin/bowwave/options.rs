@@ -17,7 +17,7 @@ impl From<GhostsArg> for bowwave::sph::polyline_wall::GhostKind {
 }
 
 /// A duration given in minutes on the command line: `None` for 0; an error naming the option otherwise.
-fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> {
+pub fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duration>> {
     if !(m.is_finite() && m >= 0.0) {
         anyhow::bail!("{option} {m}: expected a number of minutes, 0 or more");
     }

@@ -1,12 +1,16 @@
 //! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
 
+use crate::options::{halted, minutes, BLEW_UP};
 use bowwave::analysis::wave_pattern::eta_field;
-use bowwave::compare3d::towed_ship::{self, TowedShip};
+use bowwave::compare3d::towed_ship::{self, CheckpointPolicy, TowedShip};
+use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::io::atomic::write_atomic;
 use bowwave::io::csv_table::Table;
 use clap::Args;
 use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
 
 #[derive(Args)]
 pub struct ShipArgs {
@@ -40,6 +44,14 @@ pub struct ShipArgs {
     /// Run it at the same spacing: `bowwave twodt --hull H --fr F --dx (D/L)/res --ratio 1 --until transom`.
     #[arg(long)]
     pub twodt: Option<PathBuf>,
+    /// Minutes of wall time between checkpoints (OUT/checkpoint.bin; 0: none). The same command run again goes on
+    /// from the checkpoint, to the same bits.
+    #[arg(long, default_value_t = 10.0)]
+    pub checkpoint_every: f64,
+    /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
+    /// again to go on.
+    #[arg(long)]
+    pub wall_limit: Option<f64>,
     /// Output folder (default out/ship-NAME-frF-resR).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -49,7 +61,7 @@ pub struct ShipArgs {
 }
 
 impl ShipArgs {
-    pub fn run(self) -> anyhow::Result<()> {
+    pub fn run(self) -> anyhow::Result<ExitCode> {
         let offsets = HullOffsets::read(&self.hull)?;
         let name = offsets.meta.name.clone();
         let hull = HullSurface::new(&offsets);
@@ -82,7 +94,24 @@ impl ShipArgs {
             .out
             .unwrap_or_else(|| PathBuf::from(format!("out/ship-{name}-fr{}-res{}", self.fr, self.res)));
         std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
-        let r = towed_ship::run(&opts, !self.quiet)?;
+        let every = minutes("--checkpoint-every", self.checkpoint_every)?;
+        let wall_limit = self
+            .wall_limit
+            .map(|w| minutes("--wall-limit", w))
+            .transpose()?
+            .flatten();
+        if every.is_some() || wall_limit.is_some() {
+            opts.checkpoint = Some(CheckpointPolicy {
+                dir: out.clone(),
+                every: every.unwrap_or(Duration::MAX),
+                wall_limit,
+                halt_at_step: None,
+            });
+        }
+        let r = match towed_ship::run(&opts, !self.quiet)? {
+            Ended::Ran(r) => r,
+            Ended::Halted(h) => return Ok(halted(&h)),
+        };
         let x_end = hull.x_range.1 - hull.x_range.0;
         let c = twodt.as_ref().map(|f| towed_ship::compare(&r.eta, f, self.fr, x_end));
         for (file, t) in towed_ship::tables(&r, c.as_ref()) {
@@ -95,7 +124,10 @@ impl ShipArgs {
         write_atomic(&out.join("summary.txt"), text.as_bytes())?;
         print!("{text}");
         println!("written: {}", out.display());
-        anyhow::ensure!(r.blow_up.is_none(), "the 3D run blew up (outputs kept)");
-        Ok(())
+        Ok(if r.blow_up.is_some() {
+            ExitCode::from(BLEW_UP)
+        } else {
+            ExitCode::SUCCESS
+        })
     }
 }
