@@ -1,6 +1,7 @@
 //! Wave-pattern fields η(x, y) on regular grids: from a 2D+t run's η(y) profiles (`eta.csv`, one per output
 //! x/L) and from a 3D run's particles, so that the two can be drawn, sampled at the same points and subtracted.
 
+use super::contour;
 use crate::io::plot::Field;
 
 /// Regular grid of η from (x, y, η) rows: one column per distinct x (the 2D+t outputs), y bins of the run's
@@ -33,6 +34,22 @@ pub fn eta_field(x: &[f64], y: &[f64], eta: &[f64]) -> Option<Field> {
         dy,
         values,
     })
+}
+
+/// Contour segments of `f` every 0.1 (in the field's unit, D for η/D) from `lowest` to `highest` tenths, the
+/// zero level left out (it outlines the calm far field, not the waves).
+pub fn tenth_contours(f: &Field, lowest: i32, highest: i32) -> Vec<[(f64, f64); 2]> {
+    let grid = contour::Grid {
+        values: &f.values,
+        x0: f.x0,
+        dx: f.dx,
+        y0: f.y0,
+        dy: f.dy,
+    };
+    (lowest..=highest)
+        .filter(|k| *k != 0)
+        .flat_map(|k| contour::segments(&grid, 0.1 * k as f64))
+        .collect()
 }
 
 /// The grid of a 3D free-surface map: `nx` × `ny` square bins of edge `bin`, the first centred at (x0, y0).

@@ -5,8 +5,7 @@
 
 use super::collect::RESOLVED_JET_PARTICLES;
 use super::runner::{case_dir, CaseRecord};
-use crate::analysis::contour;
-use crate::analysis::wave_pattern::eta_field;
+use crate::analysis::wave_pattern::{eta_field, tenth_contours};
 use crate::io::csv_table::Table;
 use crate::io::plot::{self, ScatterPanel, Series, Style};
 use crate::reference::PublishedJet;
@@ -278,21 +277,7 @@ fn wave_patterns(out: &Path, recs: &[CaseRecord], study_out: &Path) -> anyhow::R
         for col in field.values.iter_mut() {
             col.truncate(keep);
         }
-        let segs: Vec<[(f64, f64); 2]> = (-5..=15)
-            .filter(|k| *k != 0)
-            .flat_map(|k| {
-                contour::segments(
-                    &contour::Grid {
-                        values: &field.values,
-                        x0: field.x0,
-                        dx: field.dx,
-                        y0: field.y0,
-                        dy: field.dy,
-                    },
-                    0.1 * k as f64,
-                )
-            })
-            .collect();
+        let segs = tenth_contours(&field, -5, 15);
         let fr = r.result.fr;
         let ticks: Vec<(f64, String)> = [4.0, 3.0, 2.0, 1.5, 1.2, 1.0, 0.8, 0.7, 0.6, 0.5, 0.4]
             .iter()
