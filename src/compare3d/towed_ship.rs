@@ -337,8 +337,9 @@ pub struct Comparison {
     pub difference: Field,
     /// (x/L, largest |Δη|/D over the column, Fr_x = Fr/√(x/L)) for each column with both.
     pub columns: Vec<(f64, f64, f64)>,
-    /// The first x/L from which every column up to the stern agrees within the tolerance (None: none does).
-    pub agree_from: Option<f64>,
+    /// The stretches (first and last x/L) of consecutive columns that agree within [`AGREEMENT_OVER_D`]; the
+    /// 2D+t approximation is expected to hold near the bow, where Fr_x is large.
+    pub bands: Vec<(f64, f64)>,
 }
 
 /// The agreement the issue asks for: η within 10 % of D.
@@ -363,14 +364,20 @@ pub fn compare(three: &Field, twodt: &Field, fr: f64, x_end: f64) -> Comparison 
                 worst = if worst.is_nan() { v.abs() } else { worst.max(v.abs()) };
             }
         }
-        if worst.is_finite() && x <= x_end {
+        if worst.is_finite() && x <= x_end + 1e-9 {
             columns.push((x, worst, fr / x.sqrt()));
         }
     }
-    let agree_from = columns
-        .iter()
-        .rposition(|c| c.1 >= AGREEMENT_OVER_D)
-        .map_or(columns.first().map(|c| c.0), |k| columns.get(k + 1).map(|c| c.0));
+    let mut bands: Vec<(f64, f64)> = vec![];
+    let mut open = false;
+    for c in &columns {
+        match (c.1 < AGREEMENT_OVER_D, open) {
+            (true, true) => bands.last_mut().expect("an open band").1 = c.0,
+            (true, false) => bands.push((c.0, c.0)),
+            _ => {}
+        }
+        open = c.1 < AGREEMENT_OVER_D;
+    }
     Comparison {
         difference: Field {
             x0: three.x0,
@@ -380,7 +387,7 @@ pub fn compare(three: &Field, twodt: &Field, fr: f64, x_end: f64) -> Comparison 
             values,
         },
         columns,
-        agree_from,
+        bands,
     }
 }
 
@@ -486,12 +493,19 @@ pub fn summary(r: &TowedResult, c: Option<&Comparison>) -> String {
         s += &format!("blew up: {b}\n");
     }
     if let Some(c) = c {
-        s += &match c.agree_from {
-            Some(x) => format!(
-                "3D and 2D+t agree within {AGREEMENT_OVER_D} D in η from x/L {x:.3} (Fr_x {:.2}) to the stern\n",
-                r.fr / x.sqrt()
-            ),
-            None => format!("3D and 2D+t do not agree within {AGREEMENT_OVER_D} D in η at the stern's column\n"),
+        let fr_x = |x: f64| r.fr / x.sqrt();
+        s += &if c.bands.is_empty() {
+            format!("3D and 2D+t agree within {AGREEMENT_OVER_D} D in η nowhere along the hull\n")
+        } else {
+            let bands: Vec<String> = c
+                .bands
+                .iter()
+                .map(|b| format!("x/L {:.3}–{:.3} (Fr_x {:.2}–{:.2})", b.0, b.1, fr_x(b.0), fr_x(b.1)))
+                .collect();
+            format!(
+                "3D and 2D+t agree within {AGREEMENT_OVER_D} D in η (every column across the tank) over {}\n",
+                bands.join(", ")
+            )
         };
         s += "x/L     max|Δη|/D   Fr_x\n";
         for col in &c.columns {
@@ -518,28 +532,32 @@ mod tests {
     }
 
     /// Two maps that differ by 0.3 D ahead of x/L 0.42 and by 0.05 D after it agree from the first column past
-    /// it (0.45), and the difference map carries the difference.
+    /// it (0.45) to the stern, one band, and the difference map carries the difference.
     #[test]
     fn agreement_starts_after_the_last_column_off_by_more_than_a_tenth_of_d() {
         let a = field(|x, y| (x * 3.0).sin() * y, -0.2, 0.05, 25, 10);
         let b = field(
-            |x, y| (x * 3.0).sin() * y + if x < 0.4 { 0.3 } else { 0.05 },
+            |x, y| (x * 3.0).sin() * y + if x < 0.42 { 0.3 } else { 0.05 },
             -0.2,
             0.01,
             121,
             50,
         );
         let c = compare(&a, &b, 0.5, 1.0);
-        let from = c.agree_from.unwrap();
-        assert!((from - 0.45).abs() < 1e-9, "agrees from {from}");
+        assert_eq!(c.bands.len(), 1, "{:?}", c.bands);
+        let (from, to) = c.bands[0];
+        assert!(
+            (from - 0.45).abs() < 1e-9 && (to - 1.0).abs() < 1e-9,
+            "agrees over {from}–{to}"
+        );
         for (x, worst, fr_x) in &c.columns {
             assert!(*x > 0.0);
             assert!((fr_x - 0.5 / x.sqrt()).abs() < 1e-12);
             let want = if *x < 0.42 { 0.3 } else { 0.05 };
             assert!((worst - want).abs() < 0.02, "x {x}: {worst}");
         }
-        // Nothing agrees: None.
+        // Nothing agrees: no band.
         let far = field(|_, _| 1.0, -0.2, 0.01, 121, 50);
-        assert_eq!(compare(&a, &far, 0.5, 1.0).agree_from, None);
+        assert!(compare(&a, &far, 0.5, 1.0).bands.is_empty());
     }
 }

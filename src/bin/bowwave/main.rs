@@ -63,7 +63,7 @@ enum Command {
     /// The 3D mode's ship: a hull file's surface as a 3D wall, towed from rest to U = Fr √(gL) through the 2D+t
     /// scene's tank extruded along x until its bow crest is steady; its wave pattern η(x, y) (ship3d_eta.csv, a
     /// PNG map), the bow's history (bow.csv), and with `--twodt` the 2D+t map beside it, their difference and
-    /// the x/L from which they agree within 0.1 D (agreement.csv).
+    /// the stretches of x/L over which they agree within 0.1 D (agreement.csv).
     Ship(ship::ShipArgs),
     /// Hull geometry: check a hull file, import one from STL, generate the Athena or Alliance approximation,
     /// draw a hull, or write the Wigley hull.

@@ -40,7 +40,7 @@ pub struct ShipArgs {
     #[arg(long, default_value_t = 0.25)]
     pub steady_over: f64,
     /// A `bowwave twodt` output folder of the same hull and Froude number (its eta.csv): the 2D+t map is drawn
-    /// beside the 3D one, their difference mapped, and the x/L from which they agree within 0.1 D printed.
+    /// beside the 3D one, their difference mapped, and the stretches of x/L where they agree within 0.1 D printed.
     /// Run it at the same spacing: `bowwave twodt --hull H --fr F --dx (D/L)/res --ratio 1 --until transom`.
     #[arg(long)]
     pub twodt: Option<PathBuf>,
