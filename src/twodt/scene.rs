@@ -29,23 +29,20 @@ pub fn auto_dx(fr: f64, draft: f64) -> f64 {
     estimated_hpj_over_d(fr) * draft / 25.0
 }
 
-/// Ratio of the fastest water to the fastest wetted wall (dimensionless): the run-up sheet and the jet move
-/// faster than the section that pushes them. Measured 1.8–2.7 (max|u| over max|w_n| below the calm waterline,
-/// Athena Fr 0.5–0.64 and Alliance Fr 0.33–0.44 at dx/L 7e-4, the earlier Athena at 1.9e-4), so 3 keeps
-/// Mach ≤ 0.1 with a margin (`docs/decisions/twodt-sound-speed.md`).
-pub const RUN_UP_SPEED_FACTOR: f64 = 3.0;
+/// Ratio of the expected fastest water to the fastest point of the section (dimensionless): the run-up sheet
+/// is faster than the wall that pushes it (`docs/decisions/twodt-sound-speed.md`).
+pub const RUN_UP_SPEED_FACTOR: f64 = 2.5;
 
 /// Expected maximum fluid speed / √(gL): the larger of [`RUN_UP_SPEED_FACTOR`] times the largest expansion
-/// velocity |w_n| of the girth below the calm waterline (z ≤ 0) met between x0 and x_end, and the free-fall
-/// speed √(2 g H_pj) of the crest (`docs/decisions/twodt-sound-speed.md`). The dry girth is left out: a flared
-/// bow's top sweeps out fast where no water follows it.
+/// velocity |w_n| met between x0 and x_end over the whole girth, and the free-fall speed √(2 g H_pj) of the crest
+/// (`docs/decisions/twodt-sound-speed.md`, which also records why the wetted girth alone was tried and not kept).
 pub fn expected_max_speed(hull: &HullSurface, fr: f64, x0: f64, x_end: f64, draft: f64) -> f64 {
     let mut wn = 0.0f64;
     let n = 200;
     for k in 0..=n {
         let x = x0 + (x_end - x0) * k as f64 / n as f64;
         if let Some(s) = hull.section(x, draft / 20.0) {
-            for p in s.iter().filter(|p| p.z <= 0.0) {
+            for p in s {
                 wn = wn.max((p.w_n_over_u * fr).abs());
             }
         }
@@ -341,10 +338,11 @@ mod tests {
     use super::*;
     use crate::geometry::wigley;
 
-    /// Wigley's y = (B/2)(1 − ξ²)(1 − (z/D)²), ξ = 2x/L − 1: below the waterline |w_n|/U = |∂y/∂x| / √(1 + (∂y/∂z)²)
-    /// is largest at the stem and stern on the waterline, 2B/L, so the expected speed is 3 Fr · 2B/L.
+    /// Wigley's y = (B/2)(1 − ξ²)(1 − (z/D)²), ξ = 2x/L − 1, wall-sided above the waterline: |w_n|/U =
+    /// |∂y/∂x| / √(1 + (∂y/∂z)²) is largest at the stem and stern from the waterline up, 2B/L, so the expected speed
+    /// is 2.5 Fr · 2B/L.
     #[test]
-    fn expected_speed_is_three_times_the_wigley_waterline_entry_speed() {
+    fn expected_speed_is_two_and_a_half_times_the_wigley_waterline_entry_speed() {
         let spec = wigley::WigleySpec::default();
         let s = HullSurface::new(&wigley::wigley(&spec));
         let (fr, d) = (0.5, 1.0 / spec.l_over_d);
