@@ -105,6 +105,32 @@ pub fn eta_field_3d(
     }
 }
 
+/// Along x, one row per column of `f` (an η(x, y) map whose first bins are at the hull): x, the first finite bin's
+/// value (the wave profile on the hull, its run-up), the column's largest value (the crest) and its y; NaN where a
+/// column holds nothing.
+pub fn along_x(f: &Field) -> Vec<[f64; 4]> {
+    f.values
+        .iter()
+        .enumerate()
+        .map(|(i, col)| {
+            let x = f.x0 + i as f64 * f.dx;
+            let hull = col.iter().copied().find(|v| v.is_finite()).unwrap_or(f64::NAN);
+            let crest =
+                col.iter()
+                    .enumerate()
+                    .filter(|(_, v)| v.is_finite())
+                    .fold((f64::NAN, f64::NAN), |best, (j, v)| {
+                        if best.0.is_nan() || *v > best.0 {
+                            (*v, f.y0 + j as f64 * f.dy)
+                        } else {
+                            best
+                        }
+                    });
+            [x, hull, crest.0, crest.1]
+        })
+        .collect()
+}
+
 /// The field at (x, y): the nearest column in x (NaN beyond half a column of either end), linear in y between the
 /// two nearest bins (the nearer one where the other is NaN; NaN outside the column).
 pub fn sample(f: &Field, x: f64, y: f64) -> f64 {
@@ -184,5 +210,8 @@ mod tests {
         let g = eta_field(&x, &y, &e).unwrap();
         assert_eq!(g.values[2][3], 23.0);
         assert_eq!(sample(&g, 0.1, 0.075), 11.5);
+        // Along x: the first bin (the hull's), the crest and its y.
+        let a = along_x(&g);
+        assert_eq!(a[1], [0.1, 10.0, 13.0, 0.15000000000000002]);
     }
 }

@@ -14,7 +14,7 @@
 
 use super::ship::{ShipScene, ShipTank};
 use super::towed_checkpoint;
-use crate::analysis::wave_pattern::{eta_field_3d, sample, tenth_contours, Bins};
+use crate::analysis::wave_pattern::{along_x, eta_field_3d, sample, tenth_contours, Bins};
 use crate::driver::progress::{Progress, Status};
 use crate::driver::{drive, Ended, Flow, Halted, Outcome, Watch};
 use crate::geometry::hydrostatics::section_hydro;
@@ -134,9 +134,50 @@ impl TowedShip {
     }
 }
 
-/// Runs the towed ship (or goes on from its checkpoint), until its bow is steady past the shortest travel or it
-/// reaches the longest; `Halted` when the checkpoint policy's wall-time limit stopped it with its state saved.
-pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult>> {
+/// The hull's motion: from rest to U along −x over the ramp.
+fn tank_motion(opts: &TowedShip, l: f64) -> RigidMotion<3> {
+    let u = opts.fr * (G * l).sqrt();
+    RigidMotion::Ramp {
+        velocity: Vector3::new(-u, 0.0, 0.0),
+        time: 2.0 * opts.ramp_over_l * l / u,
+    }
+}
+
+/// Throughput of the first towed run (particle-steps per second: Wigley, D/dx 5, 2 threads on cores shared with
+/// other runs, session 30), for [`plan`]'s estimate.
+pub const MEASURED_THROUGHPUT: f64 = 1.45e4;
+
+/// What a towed run will cost, before it runs: particles, hull ghosts, c0 and the steps to the shortest and the
+/// longest travel (the time step as the sound speed sets it, Δt = CFL h / c0).
+pub struct Plan {
+    pub particles: usize,
+    pub hull_ghosts: usize,
+    pub c0_over_sqrt_gl: f64,
+    pub steps_min: f64,
+    pub steps_max: f64,
+}
+
+/// Builds the scene and estimates the run (`bowwave ship --dry-run`).
+pub fn plan(opts: &TowedShip) -> anyhow::Result<Plan> {
+    let (scene, c0_over_sqrt_gl, ramp_time) = scene(opts)?;
+    let (l, u) = (scene.length, opts.fr * (G * scene.length).sqrt());
+    let cfg = &scene.sim.cfg;
+    // The step the sound speed alone sets, shortened by what the flow adds to the signal speed: the first run
+    // (Wigley, Fr 0.5, D/dx 5) took 455 steps where CFL h / c0 gives 394.
+    let dt = cfg.cfl * cfg.h / cfg.eos.c0 / 1.15;
+    // After the ramp the travel is U (t − T/2).
+    let steps = |travel: f64| (travel * l / u + 0.5 * ramp_time) / dt;
+    Ok(Plan {
+        particles: scene.sim.n_fluid(),
+        hull_ghosts: scene.hull_ghosts,
+        c0_over_sqrt_gl,
+        steps_min: steps(opts.min_travel_over_l),
+        steps_max: steps(opts.max_travel_over_l),
+    })
+}
+
+/// The towed scene of `opts`, its c0/√(gL) and the ramp's duration (s).
+fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64, f64)> {
     anyhow::ensure!(
         opts.fr.is_finite() && opts.fr > 0.0,
         "ship: Froude number must be positive, got {}",
@@ -159,7 +200,6 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
     let hull = &opts.hull;
     let (l, d) = (hull.meta.length_m, hull.meta.draft_m);
     let d_over_l = d / l;
-    let dx_over_l = d_over_l / opts.d_over_dx;
     let u = opts.fr * (G * l).sqrt();
     // The 2D+t rule (`docs/decisions/twodt-sound-speed.md`): 10 × the expected largest speed.
     let c0_over_sqrt_gl = 10.0 * expected_max_speed(hull, opts.fr, hull.x_range.0, hull.x_range.1, d_over_l);
@@ -167,24 +207,31 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
     let ramp_time = 2.0 * opts.ramp_over_l * l / u;
     let mut tank = ShipTank::new(
         hull.clone(),
-        dx_over_l,
+        d_over_l / opts.d_over_dx,
         opts.max_travel_over_l + 0.5,
         opts.behind_over_l,
     );
     tank.tank_ghosts = GhostKind::Images;
     tank.c0_over_sqrt_gd = c0_over_sqrt_gl / d_over_l.sqrt();
-    let motion = RigidMotion::Ramp {
-        velocity: Vector3::new(-u, 0.0, 0.0),
-        time: ramp_time,
-    };
-    tank.motion = motion;
+    tank.motion = tank_motion(opts, l);
+    Ok((tank.build()?, c0_over_sqrt_gl, ramp_time))
+}
+
+/// Runs the towed ship (or goes on from its checkpoint), until its bow is steady past the shortest travel or it
+/// reaches the longest; `Halted` when the checkpoint policy's wall-time limit stopped it with its state saved.
+pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult>> {
+    let (scene, c0_over_sqrt_gl, _) = scene(opts)?;
+    let hull = &opts.hull;
+    let (l, d) = (hull.meta.length_m, hull.meta.draft_m);
+    let dx_over_l = d / l / opts.d_over_dx;
+    let motion = tank_motion(opts, l);
     let ShipScene {
         mut sim,
         hull_ghosts,
         lo,
         hi,
         ..
-    } = tank.build()?;
+    } = scene;
     let dx = sim.cfg.dx;
     let stem = hull.x_range.0;
     // The map: bins of 2 dx from 0.3 L ahead of the stem to the stern, across the tank.
@@ -392,8 +439,10 @@ pub fn compare(three: &Field, twodt: &Field, fr: f64, x_end: f64) -> Comparison 
 }
 
 /// The result's tables: `ship3d_eta.csv` (x_over_l, y_over_l, eta_over_d of the final map), `bow.csv` (the
-/// crest's history) and, with a 2D+t map, `agreement.csv` (per column: x/L, largest |Δη|/D, Fr_x).
-pub fn tables(r: &TowedResult, c: Option<&Comparison>) -> Vec<(&'static str, Table)> {
+/// crest's history), `profile.csv` (per column of the map: the wave profile on the hull, the crest and its y, and
+/// with a 2D+t map the same read from it at the nearest x) and, with a 2D+t map, `agreement.csv` (per column: x/L,
+/// largest |Δη|/D, Fr_x).
+pub fn tables(r: &TowedResult, twodt: Option<(&Field, &Comparison)>) -> Vec<(&'static str, Table)> {
     let cols = |names: &[&str]| names.iter().map(|s| s.to_string()).collect::<Vec<_>>();
     let mut eta = Table::new(cols(&["x_over_l", "y_over_l", "eta_over_d"]));
     for (i, col) in r.eta.values.iter().enumerate() {
@@ -407,8 +456,25 @@ pub fn tables(r: &TowedResult, c: Option<&Comparison>) -> Vec<(&'static str, Tab
     for b in &r.bow {
         bow.push(vec![b.0, b.1, b.2]);
     }
-    let mut out = vec![("ship3d_eta.csv", eta), ("bow.csv", bow)];
-    if let Some(c) = c {
+    let mut names = vec!["x_over_l", "hull_eta_over_d", "crest_over_d", "crest_y_over_l"];
+    if twodt.is_some() {
+        names.extend(["twodt_hull_eta_over_d", "twodt_crest_over_d", "twodt_crest_y_over_l"]);
+    }
+    let mut profile = Table::new(cols(&names));
+    let two = twodt.map(|(f, _)| (along_x(f), f.x0, f.dx));
+    for row in along_x(&r.eta) {
+        let mut v = row.to_vec();
+        if let Some((t, x0, dx)) = &two {
+            let i = ((row[0] - x0) / dx).round();
+            match (i >= 0.0).then(|| t.get(i as usize)).flatten() {
+                Some(c) => v.extend_from_slice(&c[1..]),
+                None => v.extend([f64::NAN; 3]),
+            }
+        }
+        profile.push(v);
+    }
+    let mut out = vec![("ship3d_eta.csv", eta), ("bow.csv", bow), ("profile.csv", profile)];
+    if let Some((_, c)) = twodt {
         let mut t = Table::new(cols(&["x_over_l", "max_abs_diff_over_d", "fr_x"]));
         for col in &c.columns {
             t.push(vec![col.0, col.1, col.2]);

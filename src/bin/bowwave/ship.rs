@@ -55,6 +55,10 @@ pub struct ShipArgs {
     /// Output folder (default out/ship-NAME-frF-resR).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Build the scene and print its particles, hull ghosts, c0 and the steps and time to the shortest and the
+    /// longest travel (at the throughput of the first towed run), and run nothing.
+    #[arg(long)]
+    pub dry_run: bool,
     /// No progress bars.
     #[arg(short, long)]
     pub quiet: bool,
@@ -90,6 +94,27 @@ impl ShipArgs {
         opts.min_travel_over_l = self.min_travel;
         opts.steady_tolerance_over_d = self.steady_tol;
         opts.steady_over_l = self.steady_over;
+        if self.dry_run {
+            let p = towed_ship::plan(&opts)?;
+            let rate = towed_ship::MEASURED_THROUGHPUT;
+            let hours = |steps: f64| p.particles as f64 * steps / rate / 3600.0;
+            println!(
+                "{name}, Fr {}, D/dx {}: {} particles, {} hull ghosts, c0 {:.2} √(gL); {:.0} steps to {} L travelled \
+                 (about {:.1} h), {:.0} to {} L ({:.1} h), at {rate:.2e} particle-steps/s (2 threads, measured)",
+                self.fr,
+                self.res,
+                p.particles,
+                p.hull_ghosts,
+                p.c0_over_sqrt_gl,
+                p.steps_min,
+                self.min_travel,
+                hours(p.steps_min),
+                p.steps_max,
+                self.travel,
+                hours(p.steps_max)
+            );
+            return Ok(ExitCode::SUCCESS);
+        }
         let out = self
             .out
             .unwrap_or_else(|| PathBuf::from(format!("out/ship-{name}-fr{}-res{}", self.fr, self.res)));
@@ -114,7 +139,7 @@ impl ShipArgs {
         };
         let x_end = hull.x_range.1 - hull.x_range.0;
         let c = twodt.as_ref().map(|f| towed_ship::compare(&r.eta, f, self.fr, x_end));
-        for (file, t) in towed_ship::tables(&r, c.as_ref()) {
+        for (file, t) in towed_ship::tables(&r, twodt.as_ref().zip(c.as_ref())) {
             let path = out.join(file);
             t.write(&path)
                 .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
