@@ -1,5 +1,6 @@
 //! What this process has used: CPU seconds (user + system) and its peak resident memory, from
-//! `getrusage(RUSAGE_SELF)` (POSIX; microsecond resolution, no clock-tick rate to assume).
+//! `getrusage(RUSAGE_SELF)` (POSIX; microsecond resolution, no clock-tick rate to assume); and the memory the
+//! machine can still give, before a large run allocates.
 
 fn usage() -> Option<libc::rusage> {
     let mut u = std::mem::MaybeUninit::<libc::rusage>::zeroed();
@@ -22,6 +23,15 @@ pub fn peak_rss_bytes() -> u64 {
     usage().map_or(0, |u| u.ru_maxrss.max(0) as u64 * 1024)
 }
 
+/// Memory the machine can still give without swapping, in bytes: `MemAvailable` of `/proc/meminfo` (Linux);
+/// None where that is not readable.
+pub fn available_memory_bytes() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -35,5 +45,9 @@ mod tests {
         std::hint::black_box(x);
         assert!(super::cpu_seconds() > c0, "no CPU time counted");
         assert!(super::peak_rss_bytes() > 1 << 20, "under 1 MiB resident");
+        if cfg!(target_os = "linux") {
+            let free = super::available_memory_bytes().expect("/proc/meminfo's MemAvailable");
+            assert!(free > 1 << 20, "{free} bytes available");
+        }
     }
 }

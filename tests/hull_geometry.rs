@@ -137,6 +137,44 @@ fn every_malformed_hull_file_is_rejected_with_a_located_message() {
     }
 }
 
+/// Issue #31, bad input: an STL whose wetted surface has a hole (two triangles taken out below the waterline) is
+/// refused with the file and the open edge named, before any section is cut; the same mesh whole imports.
+#[test]
+fn stl_with_a_hole_below_the_waterline_is_refused_naming_the_open_edge() {
+    use bowwave::geometry::stl::{import_stl, surface_triangles, write_stl, ImportOptions};
+    let s = HullSurface::new(&wigley(&WigleySpec::default()));
+    let dir = std::env::temp_dir().join(format!("bowwave-stl-hole-{}", std::process::id()));
+    let opts = ImportOptions {
+        name: "holed".into(),
+        stations: vec![0.25, 0.5, 0.75],
+        length_m: None,
+        stem_at_max_x: false,
+        transom: false,
+    };
+    let mut tris = surface_triangles(&s, 40, 20, true);
+    let path = dir.join("whole.stl");
+    write_stl(&path, &tris).unwrap();
+    assert!(import_stl(&path, &opts).is_ok(), "the whole mesh");
+    // Mid-length, mid-depth on the starboard side: quad (20, 5) of 40 × 20, two triangles each.
+    let k = 2 * (20 * 20 + 5);
+    assert!(
+        tris[k].vertices.iter().all(|v| v[2] < 0.0),
+        "the quad is below the waterline"
+    );
+    tris.drain(k..k + 2);
+    let path = dir.join("holed.stl");
+    write_stl(&path, &tris).unwrap();
+    let e = format!(
+        "{:#}",
+        import_stl(&path, &opts).expect_err("a holed mesh must be refused")
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(
+        e.contains("holed.stl") && e.contains("not watertight") && e.contains("one triangle"),
+        "{e}"
+    );
+}
+
 #[test]
 fn wigley_stl_export_imports_back_to_the_same_sections() {
     use bowwave::geometry::stl::{import_stl, surface_triangles, write_stl, ImportOptions};

@@ -292,3 +292,164 @@ fn resumed_towed_ship_gives_the_same_bits_as_an_uninterrupted_one() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// What the Wigley hull at rest (U = 0) in the 3D ship's tank leaves after `steps` steps on `n` threads, D/dx 2
+/// (1 880 particles), image faces as the towed runs use: every particle's bits (by id), the mechanical energy at
+/// the start and at the end, and the run's scene.
+struct HullAtRestRun {
+    bits: Vec<u64>,
+    start: bowwave::sph::diagnostics::Energies,
+    end: bowwave::sph::diagnostics::Energies,
+    scene_before: bowwave::sph::particles::Fluid<3>,
+    after: bowwave::sph::particles::Fluid<3>,
+    pressure: Vec<f64>,
+    lo: Vector3<f64>,
+    hi: Vector3<f64>,
+    dx: f64,
+    draft: f64,
+}
+
+fn hull_at_rest_run(n: usize, steps: usize) -> HullAtRestRun {
+    use bowwave::compare3d::ship::ShipTank;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
+    pool.install(|| {
+        let hull = bowwave::validation::hull_at_rest::wigley();
+        let d_over_l = hull.meta.draft_m / hull.meta.length_m;
+        let mut tank = ShipTank::new(hull, d_over_l / 2.0, 0.25, 0.25);
+        tank.tank_ghosts = GhostKind::Images;
+        let scene = tank.build().unwrap();
+        let (lo, hi, draft) = (scene.lo, scene.hi, scene.draft);
+        let mut sim = scene.sim;
+        let before = sim.fluid.clone();
+        let start = sim.energies();
+        for _ in 0..steps {
+            sim.step().unwrap();
+        }
+        let f = &sim.fluid;
+        let mut order: Vec<usize> = (0..f.len()).collect();
+        order.sort_by_key(|&i| f.id[i]);
+        HullAtRestRun {
+            bits: order
+                .iter()
+                .flat_map(|&i| {
+                    let (x, u) = (f.pos[i], f.vel[i]);
+                    [x.x, x.y, x.z, u.x, u.y, u.z, f.rho[i]].map(f64::to_bits)
+                })
+                .collect(),
+            start,
+            end: sim.energies(),
+            scene_before: before,
+            after: f.clone(),
+            pressure: sim.state_pressures(),
+            lo,
+            hi,
+            dx: sim.cfg.dx,
+            draft,
+        }
+    })
+}
+
+/// Issue #31's CI test of the 3D hull: the Wigley hull at rest in the ship's tank, D/dx 2, 60 steps on 1 and on
+/// 2 threads. Asserted: the same bits on both; no particle gained or lost and the total mass unchanged to the
+/// last bit (particles carry fixed masses, so this says none left the domain); the water stays out of the hull
+/// (no particle inside a section's polygon); and the state is mirror-symmetric fore and aft about midship, as the
+/// hull, the tank (as much water ahead as behind) and the lattice are (measured: 6e-14 dx in position and 2e-14
+/// ρgD in pressure, round-off; a bound of 1e-9 catches any asymmetry of the hull's ghosts or of their mirror
+/// points, which a surface sampled at 0.25 dx would show at 1e-3 dx or more). Printed, not asserted: the kinetic
+/// energy, which at this spacing is 1.2–1.7e-4 M g D after 30–120 steps, and the mechanical energy, which rises
+/// by up to 7e-4 M g D over them. The issue's rest bound (E_K/(M g D) < 1e-5 after settling) is not met at any
+/// spacing run so far (`validate hull-at-rest`: 1.9–4.2e-5 at D/dx 5, docs/reference/method.md) and is
+/// therefore not claimed here.
+#[test]
+fn wigley_at_rest_keeps_its_mass_its_fore_aft_symmetry_and_its_bits_on_one_and_two_threads() {
+    use bowwave::geometry::hull_solid::{polygon_contains, section_polygon};
+    let (a, b) = (hull_at_rest_run(1, 60), hull_at_rest_run(2, 60));
+    assert!(a.bits == b.bits, "the hull at rest differs between 1 and 2 threads");
+    let (f0, f) = (&a.scene_before, &a.after);
+    assert_eq!(f.len(), f0.len(), "particles lost or gained");
+    assert_eq!(f.total_mass().to_bits(), f0.total_mass().to_bits(), "mass changed");
+    let s = G * a.draft * f.total_mass();
+    println!(
+        "{} particles: E_K/(M g D) {:.3e}, mechanical energy change {:.3e} M g D",
+        f.len(),
+        a.end.kinetic / s,
+        (a.end.mechanical() - a.start.mechanical()) / s
+    );
+    let hull = bowwave::validation::hull_at_rest::wigley();
+    let l = hull.meta.length_m;
+    let inside = f
+        .pos
+        .iter()
+        .filter(|r| section_polygon(&hull, r.x / l, 200).is_some_and(|p| polygon_contains(&p, r.y / l, r.z / l)))
+        .count();
+    assert_eq!(inside, 0, "particles inside the hull");
+    // Fore–aft mirror: the particle laid at the mirror node of each one's starting node.
+    let (lo, hi, dx) = (a.lo, a.hi, a.dx);
+    let node = |x: f64, r: &Vector3<f64>| [x, r.y, r.z].map(|c| (c / dx).round() as i64);
+    let start: std::collections::HashMap<_, _> = (0..f0.len())
+        .map(|i| (node(f0.pos[i].x, &f0.pos[i]), f0.id[i]))
+        .collect();
+    let now: std::collections::HashMap<_, _> = (0..f.len()).map(|i| (f.id[i], i)).collect();
+    let (mut dpos, mut dp) = (0.0f64, 0.0f64);
+    for i0 in 0..f0.len() {
+        let r = f0.pos[i0];
+        let twin = start[&node(lo.x + hi.x - r.x, &r)];
+        let (i, j) = (now[&f0.id[i0]], now[&twin]);
+        let (p, q) = (f.pos[i], f.pos[j]);
+        dpos = dpos.max(
+            (lo.x + hi.x - p.x - q.x)
+                .abs()
+                .max((p.y - q.y).abs())
+                .max((p.z - q.z).abs())
+                / dx,
+        );
+        dp = dp.max((a.pressure[i] - a.pressure[j]).abs() / (RHO0 * G * a.draft));
+    }
+    println!("fore–aft asymmetry: {dpos:.2e} dx in position, {dp:.2e} ρgD in pressure");
+    assert!(dpos < 1e-9 && dp < 1e-9, "asymmetric: {dpos:e} dx, {dp:e} ρgD");
+}
+
+/// Issue #31, bad input: a spacing whose particles the machine cannot hold, and a tank that cuts the hull (too
+/// narrow, too shallow), are refused with the cause before the scene is allocated (`towed_ship::plan` builds it).
+#[test]
+fn ship_too_fine_for_memory_or_in_a_tank_that_cuts_the_hull_is_refused() {
+    use bowwave::compare3d::towed_ship::{plan, TowedShip};
+    let hull = bowwave::validation::hull_at_rest::wigley();
+    let err = |opts: &TowedShip| format!("{:#}", plan(opts).err().expect("must be refused"));
+    // D/dx 400: about 4.6e10 particles, some 100 TiB.
+    let e = err(&TowedShip::new(hull.clone(), 0.5, 400.0));
+    assert!(
+        e.contains("particles") && e.contains("GiB") && e.contains("coarser"),
+        "{e}"
+    );
+    let mut narrow = TowedShip::new(hull.clone(), 0.5, 3.0);
+    narrow.half_width_over_b = 0.55;
+    let e = err(&narrow);
+    assert!(e.contains("half width 0.55 B") && e.contains("cuts the hull"), "{e}");
+    let mut shallow = TowedShip::new(hull.clone(), 0.5, 3.0);
+    shallow.depth_over_d = 1.0;
+    let e = err(&shallow);
+    assert!(e.contains("depth 1 D") && e.contains("under the keel"), "{e}");
+    assert!(plan(&TowedShip::new(hull, 0.5, 3.0)).is_ok(), "the default tank");
+}
+
+/// The towed ship gives the same bits on 1 and 2 threads (D/dx 2, to 0.3 L travelled): its bow history and its
+/// final map.
+#[test]
+fn towed_ship_gives_the_same_bits_on_one_and_two_threads() {
+    use bowwave::compare3d::towed_ship::{run, TowedShip};
+    let on = |n: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
+        pool.install(|| {
+            let mut opts = TowedShip::new(bowwave::validation::hull_at_rest::wigley(), 0.5, 2.0);
+            opts.min_travel_over_l = 0.3;
+            opts.max_travel_over_l = 0.3;
+            let r = run(&opts, false).unwrap().ran().unwrap();
+            let bits: Vec<u64> = r.eta.values.iter().flatten().map(|v| v.to_bits()).collect();
+            (r.steps, r.bow, bits)
+        })
+    };
+    let (a, b) = (on(1), on(2));
+    assert!(!a.1.is_empty() && a.2.iter().any(|v| f64::from_bits(*v).is_finite()));
+    assert!(a == b, "the towed ship differs between 1 and 2 threads");
+}

@@ -25,6 +25,13 @@ type V3 = Vector3<f64>;
 const G: f64 = 9.81;
 const RHO0: f64 = 1000.0;
 
+/// Memory of a 3D ship run per lattice node of water, in bytes: the particles with their neighbour lists, stage
+/// copies and the tank's and hull's ghosts. Measured as the slope of the peak resident memory between two
+/// towed Wigley runs (D/dx 3: 9 812 particles, 31.7 MiB; D/dx 4: 23 270, 59.7 MiB; 1 thread, session 31), with
+/// a tenth added for the second thread's buffers. Used to refuse a spacing the machine cannot hold, before
+/// anything is allocated.
+pub const BYTES_PER_PARTICLE: f64 = 2.4e3;
+
 /// The tank around a hull, in units of the hull's L, B and D.
 #[derive(Clone, Debug)]
 pub struct ShipTank {
@@ -89,6 +96,14 @@ impl ShipTank {
             self.dx_over_l,
             d / dx
         );
+        anyhow::ensure!(
+            [self.ahead_over_l, self.behind_over_l]
+                .iter()
+                .all(|a| a.is_finite() && *a >= 0.0),
+            "3D ship: water ahead of the stem ({} L) and behind the stern ({} L) must be ≥ 0",
+            self.ahead_over_l,
+            self.behind_over_l
+        );
         let cells = |length: f64| (length / dx).round().max(1.0);
         let (x0, x1) = self.hull.x_range;
         let lo = V3::new(
@@ -106,6 +121,47 @@ impl ShipTank {
         let mut cfg = SolverConfig::new(dx, RHO0, c0, BodyForce::Uniform(V3::new(0.0, 0.0, -G)));
         cfg.domain = Some((lo - (hi - lo), hi + (hi - lo)));
         let support = cfg.kernel.support_over_h() * cfg.h;
+
+        // Before anything is allocated: the tank must hold the hull with water around it (one row at least), and the machine the
+        // particles.
+        let (half_beam, keel) = self.extent();
+        // At least one row of water between the hull and a face: less, and no particle fits there; the kernel
+        // may reach across the gap, where the two walls' ghosts both act.
+        let side = (hi.y - half_beam * l) / dx;
+        anyhow::ensure!(
+            side >= 1.0,
+            "3D ship: the tank's half width {} B leaves {:.2} dx of water between the hull's widest point ({:.3} B from \
+             the centre plane) and the tank's side; expected at least 1 dx (a row of particles): a narrower tank \
+             cuts the hull",
+            self.half_width_over_b,
+            side.max(0.0),
+            half_beam * l / b
+        );
+        let under = (keel * l - lo.z) / dx;
+        anyhow::ensure!(
+            under >= 1.0,
+            "3D ship: the water's depth {} D leaves {:.2} dx under the keel ({:.3} D deep); expected at least 1 dx \
+             (a row of particles): a shallower tank cuts the hull",
+            self.depth_over_d,
+            under.max(0.0),
+            -keel * l / d
+        );
+        let nodes = [(hi.x - lo.x) / dx, (hi.y - lo.y) / dx, -lo.z / dx]
+            .iter()
+            .product::<f64>();
+        let need = nodes * BYTES_PER_PARTICLE;
+        if let Some(free) = crate::process_usage::available_memory_bytes() {
+            anyhow::ensure!(
+                need <= free as f64,
+                "3D ship: spacing dx/L {:.3e} asks for about {:.3e} particles, about {:.1} GiB at {BYTES_PER_PARTICLE} \
+                 bytes each (measured), more than the {:.1} GiB this machine has available; expected a coarser spacing \
+                 (fewer particles over the draft)",
+                self.dx_over_l,
+                nodes,
+                need / 1024f64.powi(3),
+                free as f64 / 1024f64.powi(3)
+            );
+        }
 
         let samples = oriented_points(&self.hull, 0.25 * self.dx_over_l);
         let hull_wall = SurfaceWall::new(
@@ -163,6 +219,22 @@ impl ShipTank {
             hi,
             hull_ghosts,
         })
+    }
+
+    /// The hull's largest half breadth and its deepest point (units of L, the latter ≤ 0), from its sections.
+    fn extent(&self) -> (f64, f64) {
+        let (x0, x1) = self.hull.x_range;
+        let (mut y, mut z) = (0.0f64, 0.0f64);
+        for i in 0..=100 {
+            if let Some(c) = self.hull.curve(x0 + (x1 - x0) * i as f64 / 100.0) {
+                for k in 0..=100 {
+                    let p = c.point(k as f64 / 100.0);
+                    y = y.max(p.y);
+                    z = z.min(p.z);
+                }
+            }
+        }
+        (y, z)
     }
 
     /// The highest point of the hull (units of L).

@@ -22,6 +22,12 @@ pub struct Progress {
     pub next_sample: f64,
     /// Wall seconds spent in earlier sessions.
     pub wall_before: f64,
+    /// Travel (L) at which the next ParaView frame is written, and the frames so far (time in s, number), so
+    /// that a resumed run goes on numbering and indexing them.
+    #[serde(default)]
+    pub next_frame: f64,
+    #[serde(default)]
+    pub frames: Vec<(f64, String)>,
 }
 
 #[derive(Serialize, Deserialize)]

@@ -53,8 +53,23 @@ pub struct TowedShip {
     pub sample_over_l: f64,
     /// Water behind the stern at the start (L); ahead of the stem the tank holds the longest travel plus 0.5 L.
     pub behind_over_l: f64,
+    /// The tank's half width from the centre plane, in B: 4, the 2D+t scene's ([`ShipTank`]).
+    pub half_width_over_b: f64,
+    /// The water's depth, in D: 2, the 2D+t scene's.
+    pub depth_over_d: f64,
+    /// ParaView frames of the particles and the hull during the run (None: none).
+    pub frames: Option<Frames>,
     /// Where and how often to save the run's state, and when to stop with it saved (None: never).
     pub checkpoint: Option<CheckpointPolicy>,
+}
+
+/// ParaView frames of a towed run, in the Earth frame (the hull moves along −x through the tank):
+/// `fluid_NNNN.vtp` (velocity, pressure, density), `hull_NNNN.vtp` (the hull's starboard surface at the same
+/// time) and their indexes `fluid.pvd` and `hull.pvd`, every `every_over_l` L travelled from the start.
+#[derive(Clone, Debug)]
+pub struct Frames {
+    pub dir: PathBuf,
+    pub every_over_l: f64,
 }
 
 /// Checkpoints of a towed run ([`super::towed_checkpoint`]).
@@ -86,6 +101,9 @@ impl TowedShip {
             steady_over_l: 0.25,
             sample_over_l: 0.05,
             behind_over_l: 0.5,
+            half_width_over_b: 4.0,
+            depth_over_d: 2.0,
+            frames: None,
             checkpoint: None,
         }
     }
@@ -119,7 +137,7 @@ impl TowedShip {
     /// What identifies the configuration (a checkpoint of another one is not resumed).
     fn fingerprint(&self) -> String {
         format!(
-            "{} fr {} D/dx {} ramp {} travel {}–{} steady {} over {} sample {} behind {}",
+            "{} fr {} D/dx {} ramp {} travel {}–{} steady {} over {} sample {} behind {} tank {} B {} D",
             self.hull.meta.name,
             self.fr,
             self.d_over_dx,
@@ -129,17 +147,23 @@ impl TowedShip {
             self.steady_tolerance_over_d,
             self.steady_over_l,
             self.sample_over_l,
-            self.behind_over_l
+            self.behind_over_l,
+            self.half_width_over_b,
+            self.depth_over_d
         )
     }
 }
 
+/// The ramp's duration (s): after it the travel of r(τ) = τ²(3 − 2τ) is U (t − T/2), so T = 2 × its length / U.
+fn ramp_time(opts: &TowedShip, l: f64) -> f64 {
+    2.0 * opts.ramp_over_l * l / (opts.fr * (G * l).sqrt())
+}
+
 /// The hull's motion: from rest to U along −x over the ramp.
 fn tank_motion(opts: &TowedShip, l: f64) -> RigidMotion<3> {
-    let u = opts.fr * (G * l).sqrt();
     RigidMotion::Ramp {
-        velocity: Vector3::new(-u, 0.0, 0.0),
-        time: 2.0 * opts.ramp_over_l * l / u,
+        velocity: Vector3::new(-opts.fr * (G * l).sqrt(), 0.0, 0.0),
+        time: ramp_time(opts, l),
     }
 }
 
@@ -159,8 +183,9 @@ pub struct Plan {
 
 /// Builds the scene and estimates the run (`bowwave ship --dry-run`).
 pub fn plan(opts: &TowedShip) -> anyhow::Result<Plan> {
-    let (scene, c0_over_sqrt_gl, ramp_time) = scene(opts)?;
+    let (scene, c0_over_sqrt_gl) = scene(opts)?;
     let (l, u) = (scene.length, opts.fr * (G * scene.length).sqrt());
+    let ramp_time = ramp_time(opts, l);
     let cfg = &scene.sim.cfg;
     // The step the sound speed alone sets, shortened by what the flow adds to the signal speed: the first run
     // (Wigley, Fr 0.5, D/dx 5) took 455 steps where CFL h / c0 gives 394.
@@ -176,8 +201,8 @@ pub fn plan(opts: &TowedShip) -> anyhow::Result<Plan> {
     })
 }
 
-/// The towed scene of `opts`, its c0/√(gL) and the ramp's duration (s).
-fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64, f64)> {
+/// The towed scene of `opts` and its c0/√(gL).
+fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64)> {
     anyhow::ensure!(
         opts.fr.is_finite() && opts.fr > 0.0,
         "ship: Froude number must be positive, got {}",
@@ -200,11 +225,7 @@ fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64, f64)> {
     let hull = &opts.hull;
     let (l, d) = (hull.meta.length_m, hull.meta.draft_m);
     let d_over_l = d / l;
-    let u = opts.fr * (G * l).sqrt();
-    // The 2D+t rule (`docs/decisions/twodt-sound-speed.md`): 10 × the expected largest speed.
-    let c0_over_sqrt_gl = 10.0 * expected_max_speed(hull, opts.fr, hull.x_range.0, hull.x_range.1, d_over_l);
-    // Travel s(t) of the ramp: U (t − T/2) after it, so T = 2 × its length / U.
-    let ramp_time = 2.0 * opts.ramp_over_l * l / u;
+    let c0_over_sqrt_gl = sound_speed(opts);
     let mut tank = ShipTank::new(
         hull.clone(),
         d_over_l / opts.d_over_dx,
@@ -212,15 +233,71 @@ fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64, f64)> {
         opts.behind_over_l,
     );
     tank.tank_ghosts = GhostKind::Images;
+    tank.half_width_over_b = opts.half_width_over_b;
+    tank.depth_over_d = opts.depth_over_d;
     tank.c0_over_sqrt_gd = c0_over_sqrt_gl / d_over_l.sqrt();
     tank.motion = tank_motion(opts, l);
-    Ok((tank.build()?, c0_over_sqrt_gl, ramp_time))
+    Ok((tank.build()?, c0_over_sqrt_gl))
+}
+
+/// c0/√(gL): the 2D+t rule (`docs/decisions/twodt-sound-speed.md`), 10 × the expected largest speed.
+fn sound_speed(opts: &TowedShip) -> f64 {
+    let hull = &opts.hull;
+    let d_over_l = hull.meta.draft_m / hull.meta.length_m;
+    10.0 * expected_max_speed(hull, opts.fr, hull.x_range.0, hull.x_range.1, d_over_l)
+}
+
+/// The run's resolved configuration as JSON (`manifest.json` of `bowwave ship`): the build, the hull file, every
+/// option with its value, and what follows from them (spacing, U, c0, the tank), written before the run starts.
+pub fn manifest(
+    opts: &TowedShip,
+    hull_file: &Path,
+    offsets: &crate::geometry::hull_file::HullOffsets,
+) -> anyhow::Result<String> {
+    let m = &offsets.meta;
+    let l = m.length_m;
+    let d_over_l = m.draft_m / l;
+    let value = serde_json::json!({
+        "bowwave_version": env!("CARGO_PKG_VERSION"),
+        "git_commit": env!("BOWWAVE_GIT_COMMIT"),
+        "command": "ship",
+        "threads": rayon::current_num_threads(),
+        "hull": {
+            "file": hull_file.display().to_string(),
+            "name": m.name,
+            "status": format!("{:?}", m.status).to_lowercase(),
+            "length_m": l,
+            "beam_m": m.beam_m,
+            "draft_m": m.draft_m,
+        },
+        "fr": opts.fr,
+        "u_m_per_s": opts.fr * (G * l).sqrt(),
+        "d_over_dx": opts.d_over_dx,
+        "dx_over_l": d_over_l / opts.d_over_dx,
+        "c0_over_sqrt_gl": sound_speed(opts),
+        "ramp_over_l": opts.ramp_over_l,
+        "min_travel_over_l": opts.min_travel_over_l,
+        "max_travel_over_l": opts.max_travel_over_l,
+        "steady_tolerance_over_d": opts.steady_tolerance_over_d,
+        "steady_over_l": opts.steady_over_l,
+        "sample_over_l": opts.sample_over_l,
+        "tank": {
+            "half_width_over_b": opts.half_width_over_b,
+            "depth_over_d": opts.depth_over_d,
+            "ahead_of_stem_over_l": opts.max_travel_over_l + 0.5,
+            "behind_stern_over_l": opts.behind_over_l,
+            "faces": "images of the fluid",
+            "hull_wall": "fixed ghosts, MLS at mirror points (thesis §7.1.1)",
+        },
+        "vtk_every_over_l": opts.frames.as_ref().map(|f| f.every_over_l),
+    });
+    Ok(serde_json::to_string_pretty(&value)?)
 }
 
 /// Runs the towed ship (or goes on from its checkpoint), until its bow is steady past the shortest travel or it
 /// reaches the longest; `Halted` when the checkpoint policy's wall-time limit stopped it with its state saved.
 pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult>> {
-    let (scene, c0_over_sqrt_gl, _) = scene(opts)?;
+    let (scene, c0_over_sqrt_gl) = scene(opts)?;
     let hull = &opts.hull;
     let (l, d) = (hull.meta.length_m, hull.meta.draft_m);
     let dx_over_l = d / l / opts.d_over_dx;
@@ -268,9 +345,8 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
     let travel = |t: f64| -motion.displacement(t).x / l;
     let fingerprint = opts.fingerprint();
     let mut state = towed_checkpoint::Progress {
-        bow: vec![],
         next_sample: opts.ramp_over_l,
-        wall_before: 0.0,
+        ..Default::default()
     };
     if let Some(c) = &opts.checkpoint {
         let path = c.dir.join(towed_checkpoint::FILE);
@@ -321,6 +397,30 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
         }
         Ok(if s >= max_travel { Flow::Stop } else { Flow::Step })
     });
+    // The hull's starboard surface at rest (m), drawn beside the particles at each frame's displacement.
+    let mesh = opts.frames.as_ref().map(|_| hull_mesh(hull, 120, 24));
+    let mut framer = Watch(|sim: &mut crate::sph::solver::Simulation<3>| {
+        let (Some(fr), Some((points, polys))) = (&opts.frames, &mesh) else {
+            return Ok(Flow::Step);
+        };
+        let s = travel(sim.time);
+        let mut st = state.borrow_mut();
+        if s + 1e-12 >= st.next_frame {
+            st.next_frame += fr.every_over_l;
+            write_frame(
+                sim,
+                &fr.dir,
+                st.frames.len(),
+                motion.displacement(sim.time).x,
+                points,
+                polys,
+            )?;
+            let k = st.frames.len();
+            st.frames.push((sim.time, format!("{k:04}")));
+            write_indexes(&fr.dir, &st.frames)?;
+        }
+        Ok(Flow::Step)
+    });
     let mut bar = Progress::new("ship ", progress, None, |sim: &crate::sph::solver::Simulation<3>| {
         Status {
             fraction: travel(sim.time) / max_travel,
@@ -351,7 +451,7 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
         }
         Ok(Flow::Step)
     });
-    let outcome = drive(&mut sim, &mut [&mut watch, &mut bar, &mut saver])?;
+    let outcome = drive(&mut sim, &mut [&mut framer, &mut watch, &mut bar, &mut saver])?;
     let blow_up = match outcome {
         Outcome::BlewUp(b) => Some(b),
         Outcome::Halted(h) => return Ok(Ended::Halted(h)),
@@ -376,6 +476,69 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
         eta: map(&sim),
         blow_up,
     }))
+}
+
+/// The hull's starboard surface (m) as `nx` × `nxi` quadrilaterals: stations uniform in x from stem to stern,
+/// girth uniform from the keel to the deck.
+fn hull_mesh(hull: &HullSurface, nx: usize, nxi: usize) -> (Vec<[f64; 3]>, Vec<Vec<usize>>) {
+    let l = hull.meta.length_m;
+    let (x0, x1) = hull.x_range;
+    let mut points = vec![];
+    let mut rows = vec![];
+    for i in 0..=nx {
+        let x = x0 + (x1 - x0) * i as f64 / nx as f64;
+        // A station where the surface has no section (a pointed end) is left out.
+        let Some(c) = hull.curve(x) else { continue };
+        rows.push(points.len());
+        for k in 0..=nxi {
+            let p = c.point(k as f64 / nxi as f64);
+            points.push([x * l, p.y.max(0.0) * l, p.z * l]);
+        }
+    }
+    let polys = rows
+        .windows(2)
+        .flat_map(|w| (0..nxi).map(move |k| vec![w[0] + k, w[1] + k, w[1] + k + 1, w[0] + k + 1]))
+        .collect();
+    (points, polys)
+}
+
+/// Writes frame `k`: the particles and the hull's surface shifted by `shift` (m) along x.
+fn write_frame(
+    sim: &crate::sph::solver::Simulation<3>,
+    dir: &Path,
+    k: usize,
+    shift: f64,
+    hull: &[[f64; 3]],
+    polys: &[Vec<usize>],
+) -> anyhow::Result<()> {
+    use crate::io::vtk::{write_mesh_vtp, write_vtp, PointData};
+    let f = &sim.fluid;
+    let pts: Vec<[f64; 3]> = f.pos.iter().map(|p| [p.x, p.y, p.z]).collect();
+    let path = dir.join(format!("fluid_{k:04}.vtp"));
+    write_vtp(
+        &path,
+        &pts,
+        &[
+            PointData::Vector("velocity", f.vel.iter().map(|v| [v.x, v.y, v.z]).collect()),
+            PointData::Scalar("pressure", sim.state_pressures()),
+            PointData::Scalar("density", f.rho.clone()),
+        ],
+    )
+    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+    let moved: Vec<[f64; 3]> = hull.iter().map(|p| [p[0] + shift, p[1], p[2]]).collect();
+    let path = dir.join(format!("hull_{k:04}.vtp"));
+    write_mesh_vtp(&path, &moved, polys).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))
+}
+
+/// Writes `fluid.pvd` and `hull.pvd`, the indexes of the frames so far ((time in s, frame number) pairs).
+fn write_indexes(dir: &Path, frames: &[(f64, String)]) -> anyhow::Result<()> {
+    for kind in ["fluid", "hull"] {
+        let entries: Vec<(f64, String)> = frames.iter().map(|(t, k)| (*t, format!("{kind}_{k}.vtp"))).collect();
+        let path = dir.join(format!("{kind}.pvd"));
+        crate::io::vtk::write_pvd(&path, &entries)
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
+    }
+    Ok(())
 }
 
 /// The 3D and 2D+t wave patterns compared column by column of the 3D map.

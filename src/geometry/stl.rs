@@ -133,6 +133,36 @@ fn chain(segs: &[[[f64; 2]; 2]], tol: f64) -> Option<Vec<[f64; 2]>> {
     (line.len() >= 3).then_some(line)
 }
 
+/// An edge of the wetted surface that only one triangle has (a hole, or a gap between triangles): its ends.
+/// Edges on the centre plane (a half hull), above the waterline (an open deck) or at the mesh's ends in x (an
+/// open transom) may be open; the vertices are the mesh's own, merged where they coincide.
+fn open_wetted_edge(
+    faces: &[stl_io::IndexedTriangle],
+    v: &[[f64; 3]],
+    (xmin, xmax): (f64, f64),
+    tol: f64,
+) -> Option<([f64; 3], [f64; 3])> {
+    let mut count: BTreeMap<(usize, usize), u32> = BTreeMap::new();
+    for t in faces {
+        for e in 0..3 {
+            let (a, b) = (t.vertices[e], t.vertices[(e + 1) % 3]);
+            *count.entry((a.min(b), a.max(b))).or_default() += 1;
+        }
+    }
+    count
+        .iter()
+        .find(|(&(a, b), &n)| n == 1 && !on_an_open_line(v[a], v[b], (xmin, xmax), tol))
+        .map(|(&(a, b), _)| (v[a], v[b]))
+}
+
+/// Whether an edge lies wholly on one of the lines or planes where a hull surface may be open.
+fn on_an_open_line(a: [f64; 3], b: [f64; 3], (xmin, xmax): (f64, f64), tol: f64) -> bool {
+    (a[1].abs() <= tol && b[1].abs() <= tol)
+        || (a[2] >= -tol && b[2] >= -tol)
+        || (a[0] <= xmin + tol && b[0] <= xmin + tol)
+        || (a[0] >= xmax - tol && b[0] >= xmax - tol)
+}
+
 /// Reads an STL and slices it into a hull offsets description.
 pub fn import_stl(path: &Path, opts: &ImportOptions) -> anyhow::Result<HullOffsets> {
     let file = path.display().to_string();
@@ -150,6 +180,16 @@ pub fn import_stl(path: &Path, opts: &ImportOptions) -> anyhow::Result<HullOffse
     let l = opts.length_m.unwrap_or(xmax - xmin);
     anyhow::ensure!(l > 0.0, "{file}: the mesh has no length along x");
     let tol = 1e-6 * l;
+    if let Some((a, b)) = open_wetted_edge(&mesh.faces, &v, (xmin, xmax), tol) {
+        let p = |q: [f64; 3]| format!("({:.4}, {:.4}, {:.4})", q[0], q[1], q[2]);
+        anyhow::bail!(
+            "{file}: the mesh is not watertight below the waterline: the edge from {} to {} m belongs to one triangle \
+             only; expected a closed wetted surface (an edge may be open only on the centre plane y = 0, above the \
+             waterline z = 0, or at the ends, as an open transom)",
+            p(a),
+            p(b)
+        );
+    }
     let mut stations = vec![];
     for &xs in &opts.stations {
         let xc = if opts.stem_at_max_x {

@@ -39,6 +39,19 @@ pub struct ShipArgs {
     /// The stretch of travel (L) over which the bow crest must stay within `--steady-tol`.
     #[arg(long, default_value_t = 0.25)]
     pub steady_over: f64,
+    /// The tank's half width from the centre plane, in B (the 2D+t scene's 4 B). The tank is a channel, not open
+    /// water: a wider one lets the divergent waves leave the hull before they reflect from its side (thesis
+    /// appendix D); it must leave at least one row of particles beside the hull.
+    #[arg(long, default_value_t = 4.0)]
+    pub half_width: f64,
+    /// The water's depth, in D (the 2D+t scene's 2 D); at least one row of particles under the keel.
+    #[arg(long, default_value_t = 2.0)]
+    pub depth: f64,
+    /// Write ParaView frames every this many L travelled (OUT/vtk: fluid_NNNN.vtp with velocity, pressure and
+    /// density, hull_NNNN.vtp the hull's surface, indexed by fluid.pvd and hull.pvd; Earth frame, the hull moving
+    /// along −x). 0: none.
+    #[arg(long, default_value_t = 0.0)]
+    pub vtk_every: f64,
     /// A `bowwave twodt` output folder of the same hull and Froude number (its eta.csv): the 2D+t map is drawn
     /// beside the 3D one, their difference mapped, and the stretches of x/L where they agree within 0.1 D printed.
     /// Run it at the same spacing: `bowwave twodt --hull H --fr F --dx (D/L)/res --ratio 1 --until transom`.
@@ -94,17 +107,25 @@ impl ShipArgs {
         opts.min_travel_over_l = self.min_travel;
         opts.steady_tolerance_over_d = self.steady_tol;
         opts.steady_over_l = self.steady_over;
+        opts.half_width_over_b = self.half_width;
+        opts.depth_over_d = self.depth;
+        anyhow::ensure!(
+            self.vtk_every.is_finite() && self.vtk_every >= 0.0,
+            "--vtk-every: expected a distance in L ≥ 0 (0: no frames), got {}",
+            self.vtk_every
+        );
         if self.dry_run {
             let p = towed_ship::plan(&opts)?;
             let rate = towed_ship::MEASURED_THROUGHPUT;
             let hours = |steps: f64| p.particles as f64 * steps / rate / 3600.0;
             println!(
-                "{name}, Fr {}, D/dx {}: {} particles, {} hull ghosts, c0 {:.2} √(gL); {:.0} steps to {} L travelled \
-                 (about {:.1} h), {:.0} to {} L ({:.1} h), at {rate:.2e} particle-steps/s (2 threads, measured)",
+                "{name}, Fr {}, D/dx {}: {} particles, {} hull ghosts, about {:.2} GiB, c0 {:.2} √(gL); {:.0} steps to {} L \
+                 travelled (about {:.1} h), {:.0} to {} L ({:.1} h), at {rate:.2e} particle-steps/s (2 threads, measured)",
                 self.fr,
                 self.res,
                 p.particles,
                 p.hull_ghosts,
+                p.particles as f64 * bowwave::compare3d::ship::BYTES_PER_PARTICLE / 1024f64.powi(3),
                 p.c0_over_sqrt_gl,
                 p.steps_min,
                 self.min_travel,
@@ -119,6 +140,16 @@ impl ShipArgs {
             .out
             .unwrap_or_else(|| PathBuf::from(format!("out/ship-{name}-fr{}-res{}", self.fr, self.res)));
         std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
+        if self.vtk_every > 0.0 {
+            let dir = out.join("vtk");
+            std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+            opts.frames = Some(towed_ship::Frames {
+                dir,
+                every_over_l: self.vtk_every,
+            });
+        }
+        let manifest = towed_ship::manifest(&opts, &self.hull, &offsets)?;
+        write_atomic(&out.join("manifest.json"), manifest.as_bytes())?;
         let every = minutes("--checkpoint-every", self.checkpoint_every)?;
         let wall_limit = self
             .wall_limit
