@@ -258,7 +258,9 @@ fn towed_wigley_raises_a_bow_crest_and_leaves_the_water_ahead_calm() {
 }
 
 /// A towed run stopped with its state saved and run again goes on to the same bits as an uninterrupted one
-/// (D/dx 2, to 0.3 L travelled, stopped at step 30 of about 50).
+/// (D/dx 2, to 0.3 L travelled, stopped at step 30 of about 50). The interrupted run also writes ParaView frames
+/// every 0.1 L: they change no bit, and the resumed run goes on numbering and indexing them (frames at 0, 0.1,
+/// 0.2 and 0.3 L, each with the hull's surface beside the particles).
 #[test]
 fn resumed_towed_ship_gives_the_same_bits_as_an_uninterrupted_one() {
     use bowwave::compare3d::towed_ship::{run, CheckpointPolicy, TowedShip};
@@ -276,6 +278,10 @@ fn resumed_towed_ship_gives_the_same_bits_as_an_uninterrupted_one() {
         wall_limit: None,
         halt_at_step: Some(30),
     });
+    opts.frames = Some(bowwave::compare3d::towed_ship::Frames {
+        dir: dir.clone(),
+        every_over_l: 0.1,
+    });
     match run(&opts, false).unwrap() {
         Ended::Halted(h) => assert_eq!(h.steps, 30),
         Ended::Ran(_) => panic!("the run did not stop at step 30"),
@@ -290,6 +296,19 @@ fn resumed_towed_ship_gives_the_same_bits_as_an_uninterrupted_one() {
         !dir.join("checkpoint.bin").exists(),
         "a finished run leaves no checkpoint"
     );
+    for kind in ["fluid", "hull"] {
+        let pvd = std::fs::read_to_string(dir.join(format!("{kind}.pvd"))).unwrap();
+        let files: Vec<&str> = pvd
+            .split("file=\"")
+            .skip(1)
+            .map(|r| &r[..r.find('"').unwrap()])
+            .collect();
+        let want: Vec<String> = (0..4).map(|k| format!("{kind}_{k:04}.vtp")).collect();
+        assert_eq!(files, want, "{kind}.pvd");
+        assert!(files.iter().all(|f| dir.join(f).exists()));
+    }
+    let hull = std::fs::read_to_string(dir.join("hull_0002.vtp")).unwrap();
+    assert!(hull.contains("NumberOfPolys=\"") && !hull.contains("NumberOfPolys=\"0\""));
     std::fs::remove_dir_all(&dir).ok();
 }
 

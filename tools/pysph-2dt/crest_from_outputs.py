@@ -1,8 +1,12 @@
 """The crest history and the first overturning of a PySPH 2D+t run (twodt.py) beside bowwave's (eta.csv).
 
-    python crest_from_outputs.py PYSPH_OUT BOWWAVE_RUN_DIR [--hull hulls/athena.csv]
+    python crest_from_outputs.py PYSPH_OUT BOWWAVE_RUN_DIR [--hull hulls/athena.csv] [--x0 X]
 
 BOWWAVE_RUN_DIR: a `bowwave twodt` output folder or a study's case folder (eta.csv, series.csv, metrics.json).
+--x0: where the PySPH run started (twodt.py's --x0), if not at the bowwave run's first x/L. If the bowwave run
+wrote VTK frames (`twodt --vtk`: BOWWAVE_RUN_DIR/vtk/*.vtp), the same overturning test is applied to its frames
+too, so that the two codes' first overturning is read by one criterion (bowwave's own plunge, a closed cavity
+with a circulation threshold, is printed beside it).
 
 Crest: the highest fluid particle, z/D, at each output x/L (bowwave: the largest eta/D of eta.csv at that x,
 its free-surface height profile). Overturning (PySPH only; bowwave's plunge criteria are in its metrics.json):
@@ -46,13 +50,44 @@ def overturned(y, z, dx):
     return False
 
 
+def option(name, default):
+    return sys.argv[sys.argv.index(name) + 1] if name in sys.argv else default
+
+
+def vtp_points(path):
+    """Points (x, y) of a bowwave .vtp frame (ASCII, 2D+t: y across the tank, z = 0) in metres."""
+    text = open(path).read()
+    start = text.index('<Points>')
+    body = text[text.index('>', text.index('<DataArray', start)) + 1:text.index('</DataArray>', start)]
+    return np.array(body.split(), dtype=float).reshape(-1, 3)[:, :2]
+
+
+def bowwave_overturn(case_dir, l, dx):
+    """First bowwave frame (x/L from the .pvd's times and the series) where the same test finds a jet over air."""
+    vtk = os.path.join(case_dir, 'vtk')
+    pvd = os.path.join(vtk, 'series.pvd')
+    if not os.path.exists(pvd):
+        return None
+    import re
+    frames = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(pvd).read())
+    series = np.loadtxt(os.path.join(case_dir, 'series.csv'), delimiter=',', skiprows=1)
+    for t, f in frames:
+        p = vtp_points(os.path.join(vtk, f)) / l
+        x = np.interp(float(t), series[:, 1], series[:, 0])
+        y, z = p[:, 0], p[:, 1]
+        if overturned(y[z > 0], z[z > 0], dx):
+            return x
+    return None
+
+
 def main():
     out, case_dir = sys.argv[1], sys.argv[2]
-    hull = sys.argv[4] if len(sys.argv) > 4 and sys.argv[3] == '--hull' else 'hulls/athena.csv'
+    hull = option('--hull', 'hulls/athena.csv')
     meta = header(hull)
     d = float(meta['draft_m']) / float(meta['length_m'])
     fr = json.load(open(os.path.join(case_dir, 'metrics.json')))['fr']
     x0 = float(np.loadtxt(os.path.join(case_dir, 'series.csv'), delimiter=',', skiprows=1, max_rows=1)[0])
+    x0 = float(option('--x0', x0))
     files = sorted(glob.glob(os.path.join(out, '*.npz')), key=lambda f: int(f.rsplit('_', 1)[1].split('.')[0]))
     ours = []
     first_overturn = None
@@ -74,8 +109,13 @@ def main():
         b = np.interp(x, [p[0] for p in theirs], [p[1] for p in theirs], left=np.nan, right=np.nan)
         print(f'{x:.4f}   {c:.4f}            {b:.4f}')
     print(f'PySPH: first overturning (jet over a gap of 3 dx) at x/L = {first_overturn}')
-    p = json.load(open(os.path.join(case_dir, 'metrics.json'))).get('plunge') or {}
-    print(f"bowwave: plunge at x/L = {p.get('x_plunge_over_l')}")
+    m = json.load(open(os.path.join(case_dir, 'metrics.json')))
+    if 'length_m' in meta:
+        dx_l = m.get('dx_over_l', dx)
+        print(f"bowwave: first overturning, same test on its VTK frames, at x/L = "
+              f"{bowwave_overturn(case_dir, float(meta['length_m']), dx_l)}")
+    p = m.get('plunge') or {}
+    print(f"bowwave: plunge (its own criteria) at x/L = {p.get('x_plunge_over_l')}")
 
 
 if __name__ == '__main__':
