@@ -4,7 +4,7 @@
 
 BOWWAVE_RUN_DIR: a `bowwave twodt` output folder or a study's case folder (eta.csv, series.csv, metrics.json).
 --x0: where the PySPH run started (twodt.py's --x0), if not at the bowwave run's first x/L. If the bowwave run
-wrote VTK frames (`twodt --vtk`: BOWWAVE_RUN_DIR/vtk/*.vtp), the same overturning test is applied to its frames
+wrote VTK frames (`twodt --vtk`: BOWWAVE_RUN_DIR/series.pvd and its frame_*.vtp), the same overturning test is applied to its frames
 too, so that the two codes' first overturning is read by one criterion (bowwave's own plunge, a closed cavity
 with a circulation threshold, is printed beside it).
 
@@ -55,28 +55,24 @@ def option(name, default):
 
 
 def vtp_points(path):
-    """Points (x, y) of a bowwave .vtp frame (ASCII, 2D+t: y across the tank, z = 0) in metres."""
+    """Points (x, y) of a bowwave 2D+t .vtp frame (ASCII; across the tank, up; units of L)."""
     text = open(path).read()
     start = text.index('<Points>')
     body = text[text.index('>', text.index('<DataArray', start)) + 1:text.index('</DataArray>', start)]
     return np.array(body.split(), dtype=float).reshape(-1, 3)[:, :2]
 
 
-def bowwave_overturn(case_dir, l, dx):
-    """First bowwave frame (x/L from the .pvd's times and the series) where the same test finds a jet over air."""
-    vtk = os.path.join(case_dir, 'vtk')
-    pvd = os.path.join(vtk, 'series.pvd')
+def bowwave_overturn(case_dir, dx):
+    """First bowwave frame (`series.pvd`, whose times are x/L) where the same test finds a jet over air."""
+    pvd = os.path.join(case_dir, 'series.pvd')
     if not os.path.exists(pvd):
         return None
     import re
-    frames = re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(pvd).read())
-    series = np.loadtxt(os.path.join(case_dir, 'series.csv'), delimiter=',', skiprows=1)
-    for t, f in frames:
-        p = vtp_points(os.path.join(vtk, f)) / l
-        x = np.interp(float(t), series[:, 1], series[:, 0])
+    for x, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(pvd).read()):
+        p = vtp_points(os.path.join(case_dir, f))
         y, z = p[:, 0], p[:, 1]
         if overturned(y[z > 0], z[z > 0], dx):
-            return x
+            return float(x)
     return None
 
 
@@ -110,10 +106,8 @@ def main():
         print(f'{x:.4f}   {c:.4f}            {b:.4f}')
     print(f'PySPH: first overturning (jet over a gap of 3 dx) at x/L = {first_overturn}')
     m = json.load(open(os.path.join(case_dir, 'metrics.json')))
-    if 'length_m' in meta:
-        dx_l = m.get('dx_over_l', dx)
-        print(f"bowwave: first overturning, same test on its VTK frames, at x/L = "
-              f"{bowwave_overturn(case_dir, float(meta['length_m']), dx_l)}")
+    print(f"bowwave: first overturning, same test on its VTK frames, at x/L = "
+          f"{bowwave_overturn(case_dir, m.get('dx_over_l', dx))}")
     p = m.get('plunge') or {}
     print(f"bowwave: plunge (its own criteria) at x/L = {p.get('x_plunge_over_l')}")
 
