@@ -100,10 +100,17 @@ def main():
     eta = np.loadtxt(os.path.join(case_dir, 'eta.csv'), delimiter=',', skiprows=1)
     xs = np.unique(eta[:, 0])
     theirs = [(x, eta[eta[:, 0] == x, 2].max()) for x in xs]
-    print('x/L      PySPH crest z/D   bowwave crest eta/D')
+    # The same measure as PySPH's where bowwave wrote frames: its highest particle.
+    top = []
+    pvd = os.path.join(case_dir, 'series.pvd')
+    if os.path.exists(pvd):
+        import re
+        for xf, f in re.findall(r'timestep="([^"]+)"[^>]*file="([^"]+)"', open(pvd).read()):
+            top.append((float(xf), vtp_points(os.path.join(case_dir, f))[:, 1].max() / d))
+    interp = lambda pts, x: np.interp(x, [p[0] for p in pts], [p[1] for p in pts], left=np.nan, right=np.nan) if pts else np.nan
+    print('x/L      PySPH highest particle z/D   bowwave highest particle z/D   bowwave crest eta/D (eta.csv)')
     for x, c in ours:
-        b = np.interp(x, [p[0] for p in theirs], [p[1] for p in theirs], left=np.nan, right=np.nan)
-        print(f'{x:.4f}   {c:.4f}            {b:.4f}')
+        print(f'{x:.4f}   {c:.4f}                       {interp(top, x):.4f}                         {interp(theirs, x):.4f}')
     print(f'PySPH: first overturning (jet over a gap of 3 dx) at x/L = {first_overturn}')
     m = json.load(open(os.path.join(case_dir, 'metrics.json')))
     print(f"bowwave: first overturning, same test on its VTK frames, at x/L = "
