@@ -240,6 +240,11 @@ fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64)> {
     Ok((tank.build()?, c0_over_sqrt_gl))
 }
 
+/// The towed scene's simulation at rest, before its first step (`bowwave bench --ship` times its steps).
+pub fn simulation(opts: &TowedShip) -> anyhow::Result<crate::sph::solver::Simulation<3>> {
+    Ok(scene(opts)?.0.sim)
+}
+
 /// c0/√(gL): the 2D+t rule (`docs/decisions/twodt-sound-speed.md`), 10 × the expected largest speed.
 fn sound_speed(opts: &TowedShip) -> f64 {
     let hull = &opts.hull;

@@ -78,27 +78,84 @@ pub fn bench_one(res: f64, end_star: f64, variant: &str) -> anyhow::Result<Bench
     })
 }
 
-/// `bowwave bench`: every resolution × thread count in a child process, then a table.
-pub fn bench_cli(res: &[f64], end: f64, threads: &[usize], variants: &[String]) -> anyhow::Result<()> {
+/// Name of the 3D benchmark's configuration in the tables (`bench --ship`).
+pub const SHIP_VARIANT: &str = "ship3d";
+
+/// One configuration of the 3D benchmark: the towed Wigley hull of `bowwave ship` (Fr 0.5, image tank faces,
+/// fixed hull ghosts) at D/dx `res`, `steps` time steps from rest (the ramp's start: the neighbourhoods, and so
+/// the cost of a step, are the scene's own from the first step on).
+pub fn bench_ship_one(res: f64, steps: u64) -> anyhow::Result<BenchResult> {
+    anyhow::ensure!(steps > 0, "bench --ship: expected at least one step");
+    let opts = crate::compare3d::towed_ship::TowedShip::new(crate::validation::hull_at_rest::wigley(), 0.5, res);
+    let mut sim = crate::compare3d::towed_ship::simulation(&opts)?;
+    let clock = std::time::Instant::now();
+    for _ in 0..steps {
+        sim.step().map_err(|b| anyhow::anyhow!("benchmark run blew up: {b}"))?;
+    }
+    let wall = clock.elapsed().as_secs_f64();
+    let t = sim.timings;
+    let total = (t.neighbour_search + t.ghost_mirroring + t.density_gradient + t.main_loop + t.update).max(1e-12);
+    let (fluid, ghosts) = (sim.n_fluid(), sim.ghosts.geom.len());
+    let rss = crate::process_usage::peak_rss_bytes();
+    Ok(BenchResult {
+        variant: SHIP_VARIANT.into(),
+        res,
+        threads: rayon::current_num_threads(),
+        fluid_particles: fluid,
+        ghost_particles: ghosts,
+        steps,
+        wall_seconds: wall,
+        particle_steps_per_second: fluid as f64 * steps as f64 / wall,
+        peak_rss_bytes: rss,
+        bytes_per_particle: rss as f64 / (fluid + ghosts) as f64,
+        share_neighbour_search: t.neighbour_search / total,
+        share_ghost_mirroring: t.ghost_mirroring / total,
+        share_density_gradient: t.density_gradient / total,
+        share_main_loop: t.main_loop / total,
+        share_update: t.update / total,
+    })
+}
+
+/// What `bowwave bench` measures: the dam break to t√(g/H) = `end` with each variant, or the towed 3D ship
+/// for `steps` steps (`ship`).
+#[derive(Clone, Debug)]
+pub enum BenchCase {
+    DamBreak { end: f64, variants: Vec<String> },
+    Ship { steps: u64 },
+}
+
+/// `bowwave bench`: every resolution × thread count in a child process, then a table (resolutions are H/dx for
+/// the dam break, D/dx for the ship).
+pub fn bench_cli(res: &[f64], threads: &[usize], case: &BenchCase) -> anyhow::Result<()> {
     let exe = std::env::current_exe()?;
     let mut results = vec![];
-    for v in variants {
+    let variants = match case {
+        BenchCase::DamBreak { variants, .. } => variants.clone(),
+        BenchCase::Ship { .. } => vec![SHIP_VARIANT.to_string()],
+    };
+    for v in &variants {
         for &r in res {
             for &n in threads {
-                eprintln!("bench: dam break H/dx = {r}, {n} thread(s), variant {v}, to t sqrt(g/H) = {end} ...");
-                let out = std::process::Command::new(&exe)
-                    .args([
-                        "--threads",
-                        &n.to_string(),
-                        "bench-one",
-                        "--res",
-                        &r.to_string(),
-                        "--end",
-                        &end.to_string(),
-                        "--variant",
-                        v,
-                    ])
-                    .output()?;
+                let mut args = vec![
+                    "--threads".to_string(),
+                    n.to_string(),
+                    "bench-one".into(),
+                    "--res".into(),
+                    r.to_string(),
+                ];
+                match case {
+                    BenchCase::DamBreak { end, .. } => {
+                        eprintln!(
+                            "bench: dam break H/dx = {r}, {n} thread(s), variant {v}, to t sqrt(g/H) = {end} ..."
+                        );
+                        args.extend(["--end".into(), end.to_string(), "--variant".into(), v.clone()]);
+                    }
+                    BenchCase::Ship { steps } => {
+                        eprintln!("bench: towed Wigley, D/dx = {r}, {n} thread(s), {steps} steps ...");
+                        args.extend(["--ship".into(), "--steps".into(), steps.to_string()]);
+                    }
+                }
+                let out = std::process::Command::new(&exe).args(&args).output()?;
                 if !out.status.success() {
                     anyhow::bail!("bench-one failed: {}", String::from_utf8_lossy(&out.stderr));
                 }
@@ -107,8 +164,8 @@ pub fn bench_cli(res: &[f64], end: f64, threads: &[usize], variants: &[String]) 
             }
         }
     }
-    println!("| variant | H/dx | threads | fluid particles | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("| variant | resolution | threads | fluid particles | ghosts | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for b in &results {
         let base = results
             .iter()
@@ -116,11 +173,12 @@ pub fn bench_cli(res: &[f64], end: f64, threads: &[usize], variants: &[String]) 
             .map(|o| format!("{:.2}", o.wall_seconds / b.wall_seconds))
             .unwrap_or_else(|| "–".into()); // no 1-thread run of this variant and resolution to compare with
         println!(
-            "| {} | {:.0} | {} | {} | {} | {:.1} | {:.3e} | {} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
+            "| {} | {} | {} | {} | {} | {} | {:.1} | {:.3e} | {} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
             b.variant,
             b.res,
             b.threads,
             b.fluid_particles,
+            b.ghost_particles,
             b.steps,
             b.wall_seconds,
             b.particle_steps_per_second,
@@ -138,6 +196,24 @@ pub fn bench_cli(res: &[f64], end: f64, threads: &[usize], variants: &[String]) 
 
 #[cfg(test)]
 mod tests {
+    /// The 3D benchmark times the towed ship's steps: its particles, ghosts and step count are the scene's, its
+    /// stage shares add up to one.
+    #[test]
+    fn ship_benchmark_counts_the_towed_scene_and_its_stages() {
+        let b = super::bench_ship_one(2.0, 2).unwrap();
+        assert_eq!((b.variant.as_str(), b.steps), (super::SHIP_VARIANT, 2));
+        assert!(b.fluid_particles > 1000 && b.ghost_particles > 0, "{b:?}");
+        let shares = b.share_neighbour_search
+            + b.share_ghost_mirroring
+            + b.share_density_gradient
+            + b.share_main_loop
+            + b.share_update;
+        assert!(
+            (shares - 1.0).abs() < 1e-9 && b.particle_steps_per_second > 0.0,
+            "{b:?}"
+        );
+    }
+
     /// Regression: from session 11 to 13 the benchmark also ran the dam break's cavity probe (validation
     /// post-processing), which raised the measured peak memory by 40 % (BENCHMARKS.md, session 14).
     #[test]
