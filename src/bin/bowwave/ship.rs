@@ -20,7 +20,7 @@ pub struct ShipArgs {
     /// Froude number U/√(gL).
     #[arg(long, default_value_t = 0.5)]
     pub fr: f64,
-    /// Particles over the draft, D/dx (D/dx 5 on the Wigley hull: about 80 000 particles, some 20–40 min on 2 cores).
+    /// Particles over the draft, D/dx (D/dx 5 on the Wigley hull: 89 436 particles, some 15–20 min on 2 idle cores).
     #[arg(long, default_value_t = 5.0)]
     pub res: f64,
     /// The hull accelerates from rest to U over this distance, in L (a smooth ramp, zero acceleration at both ends).
