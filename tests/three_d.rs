@@ -94,17 +94,21 @@ fn dam_break_bits(n: usize) -> Vec<u64> {
         for _ in 0..30 {
             sim.step().unwrap();
         }
-        let f = &sim.fluid;
-        let mut order: Vec<usize> = (0..f.len()).collect();
-        order.sort_by_key(|&i| f.id[i]);
-        order
-            .iter()
-            .flat_map(|&i| {
-                let (x, u) = (f.pos[i], f.vel[i]);
-                [x.x, x.y, x.z, u.x, u.y, u.z, f.rho[i]].map(f64::to_bits)
-            })
-            .collect()
+        state_bits(&sim.fluid)
     })
+}
+
+/// The bits of every particle's position, velocity and density, in the order of their ids.
+fn state_bits(f: &bowwave::sph::particles::Fluid<3>) -> Vec<u64> {
+    let mut order: Vec<usize> = (0..f.len()).collect();
+    order.sort_by_key(|&i| f.id[i]);
+    order
+        .iter()
+        .flat_map(|&i| {
+            let (x, u) = (f.pos[i], f.vel[i]);
+            [x.x, x.y, x.z, u.x, u.y, u.z, f.rho[i]].map(f64::to_bits)
+        })
+        .collect()
 }
 
 #[test]
@@ -345,16 +349,8 @@ fn hull_at_rest_run(n: usize, steps: usize) -> HullAtRestRun {
             sim.step().unwrap();
         }
         let f = &sim.fluid;
-        let mut order: Vec<usize> = (0..f.len()).collect();
-        order.sort_by_key(|&i| f.id[i]);
         HullAtRestRun {
-            bits: order
-                .iter()
-                .flat_map(|&i| {
-                    let (x, u) = (f.pos[i], f.vel[i]);
-                    [x.x, x.y, x.z, u.x, u.y, u.z, f.rho[i]].map(f64::to_bits)
-                })
-                .collect(),
+            bits: state_bits(f),
             start,
             end: sim.energies(),
             scene_before: before,

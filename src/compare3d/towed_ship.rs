@@ -413,15 +413,8 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
         let mut st = state.borrow_mut();
         if s + 1e-12 >= st.next_frame {
             st.next_frame += fr.every_over_l;
-            write_frame(
-                sim,
-                &fr.dir,
-                st.frames.len(),
-                motion.displacement(sim.time).x,
-                points,
-                polys,
-            )?;
             let k = st.frames.len();
+            write_frame(sim, &fr.dir, k, motion.displacement(sim.time).x, points, polys)?;
             st.frames.push((sim.time, format!("{k:04}")));
             write_indexes(&fr.dir, &st.frames)?;
         }

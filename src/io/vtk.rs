@@ -17,10 +17,7 @@ pub fn write_vtp(path: &Path, points: &[[f64; 3]], data: &[PointData]) -> std::i
     let mut s = String::with_capacity(64 * n + 1024);
     s.push_str("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n");
     let _ = writeln!(s, "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"{n}\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">");
-    s.push_str("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-    for p in points {
-        let _ = writeln!(s, "{:.8e} {:.8e} {:.8e}", p[0], p[1], p[2]);
-    }
+    push_points(&mut s, points);
     s.push_str("</DataArray>\n</Points>\n<PointData>\n");
     for d in data {
         match d {
@@ -61,10 +58,7 @@ pub fn write_mesh_vtp(path: &Path, points: &[[f64; 3]], polys: &[Vec<usize>]) ->
     let mut s = String::with_capacity(48 * n + 24 * m + 512);
     s.push_str("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n<PolyData>\n");
     let _ = writeln!(s, "<Piece NumberOfPoints=\"{n}\" NumberOfVerts=\"0\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"{m}\">");
-    s.push_str("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
-    for p in points {
-        let _ = writeln!(s, "{:.8e} {:.8e} {:.8e}", p[0], p[1], p[2]);
-    }
+    push_points(&mut s, points);
     s.push_str("</DataArray>\n</Points>\n<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
     for q in polys {
         let line: Vec<String> = q.iter().map(|i| i.to_string()).collect();
@@ -78,6 +72,14 @@ pub fn write_mesh_vtp(path: &Path, points: &[[f64; 3]], polys: &[Vec<usize>]) ->
     }
     s.push_str("</DataArray>\n</Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n");
     write_atomic(path, s.as_bytes())
+}
+
+/// Appends the `<Points>` block's opening and its coordinates (closed by the caller).
+fn push_points(s: &mut String, points: &[[f64; 3]]) {
+    s.push_str("<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n");
+    for p in points {
+        let _ = writeln!(s, "{:.8e} {:.8e} {:.8e}", p[0], p[1], p[2]);
+    }
 }
 
 /// Writes a .pvd collection: (time, file name relative to the .pvd) pairs.

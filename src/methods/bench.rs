@@ -56,26 +56,46 @@ pub fn bench_one(res: f64, end_star: f64, variant: &str) -> anyhow::Result<Bench
     if let Some(b) = &r.blowup {
         anyhow::bail!("benchmark run blew up: {b}");
     }
-    let t = r.sim.timings;
+    Ok(measured(
+        variant,
+        res,
+        (r.n_fluid, r.sim.ghosts.geom.len()),
+        r.steps,
+        r.wall_seconds,
+        r.sim.timings,
+    ))
+}
+
+/// The measurement of a run in this process: `steps` steps of `fluid` particles with `ghosts` ghosts in `wall`
+/// seconds (particle-steps per second count the fluid, a step once), the stages' shares of the solver's time,
+/// and the peak resident memory per particle, ghosts included.
+fn measured(
+    variant: &str,
+    res: f64,
+    (fluid, ghosts): (usize, usize),
+    steps: u64,
+    wall: f64,
+    t: crate::sph::solver::StageTimings,
+) -> BenchResult {
     let total = (t.neighbour_search + t.ghost_mirroring + t.density_gradient + t.main_loop + t.update).max(1e-12);
     let rss = crate::process_usage::peak_rss_bytes();
-    Ok(BenchResult {
+    BenchResult {
         variant: variant.to_string(),
         res,
         threads: rayon::current_num_threads(),
-        fluid_particles: r.n_fluid,
-        ghost_particles: r.sim.ghosts.geom.len(),
-        steps: r.steps,
-        wall_seconds: r.wall_seconds,
-        particle_steps_per_second: r.particle_steps_per_second(),
+        fluid_particles: fluid,
+        ghost_particles: ghosts,
+        steps,
+        wall_seconds: wall,
+        particle_steps_per_second: fluid as f64 * steps as f64 / wall.max(1e-12),
         peak_rss_bytes: rss,
-        bytes_per_particle: rss as f64 / (r.n_fluid + r.sim.ghosts.geom.len()) as f64,
+        bytes_per_particle: rss as f64 / (fluid + ghosts) as f64,
         share_neighbour_search: t.neighbour_search / total,
         share_ghost_mirroring: t.ghost_mirroring / total,
         share_density_gradient: t.density_gradient / total,
         share_main_loop: t.main_loop / total,
         share_update: t.update / total,
-    })
+    }
 }
 
 /// Name of the 3D benchmark's configuration in the tables (`bench --ship`).
@@ -93,27 +113,8 @@ pub fn bench_ship_one(res: f64, steps: u64) -> anyhow::Result<BenchResult> {
         sim.step().map_err(|b| anyhow::anyhow!("benchmark run blew up: {b}"))?;
     }
     let wall = clock.elapsed().as_secs_f64();
-    let t = sim.timings;
-    let total = (t.neighbour_search + t.ghost_mirroring + t.density_gradient + t.main_loop + t.update).max(1e-12);
-    let (fluid, ghosts) = (sim.n_fluid(), sim.ghosts.geom.len());
-    let rss = crate::process_usage::peak_rss_bytes();
-    Ok(BenchResult {
-        variant: SHIP_VARIANT.into(),
-        res,
-        threads: rayon::current_num_threads(),
-        fluid_particles: fluid,
-        ghost_particles: ghosts,
-        steps,
-        wall_seconds: wall,
-        particle_steps_per_second: fluid as f64 * steps as f64 / wall,
-        peak_rss_bytes: rss,
-        bytes_per_particle: rss as f64 / (fluid + ghosts) as f64,
-        share_neighbour_search: t.neighbour_search / total,
-        share_ghost_mirroring: t.ghost_mirroring / total,
-        share_density_gradient: t.density_gradient / total,
-        share_main_loop: t.main_loop / total,
-        share_update: t.update / total,
-    })
+    let counts = (sim.n_fluid(), sim.ghosts.geom.len());
+    Ok(measured(SHIP_VARIANT, res, counts, steps, wall, sim.timings))
 }
 
 /// What `bowwave bench` measures: the dam break to t√(g/H) = `end` with each variant, or the towed 3D ship
