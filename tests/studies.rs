@@ -644,3 +644,89 @@ fn a_case_runs_its_own_hull_or_a_generated_variant() {
     );
     assert!(e.contains("case.1.hull") && e.contains("not found"), "{e}");
 }
+
+/// A `[ship3d]` study (issue #31): each case runs the 2D+t partner and the towed 3D hull at one spacing (D/res),
+/// in one tank and at one sound speed, records both, writes `ship3d.csv`, the 3D files and the report's section,
+/// and is skipped when run again. Wigley at D/dx 4 in a narrow, shallow tank, towed 0.1 L: the plumbing, not a
+/// steady bow (the comparison at a useful travel is `studies/results/ship3d-*`).
+#[test]
+fn a_3d_study_tows_the_hull_beside_its_2dt_partner_at_one_spacing() {
+    let dir = std::env::temp_dir().join("bowwave-study-ship3d");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let hull = std::fs::canonicalize("hulls/wigley.csv").unwrap();
+    let path = dir.join("s3.toml");
+    std::fs::write(
+        &path,
+        format!(
+            "name = \"s3\"\nhull = \"{}\"\nfroude = [0.5]\n[ship3d]\nres = 4\nramp = 0.05\nmin_travel = 0.1\n\
+             travel = 0.1\nhalf_width = 1.5\ndepth = 1.5\n",
+            hull.display()
+        ),
+    )
+    .unwrap();
+    let study = Study::read(&path).unwrap();
+    let out = dir.join("out");
+    let ran = runner::run_cases(&study, &serial_options(&out)).unwrap();
+    assert_eq!(ran.finished, 1);
+    collect_all(&study, &out).unwrap();
+    let rec = &runner::collect_finished(&study, &out)[0];
+    let three = rec.ship3d.as_ref().expect("the 3D run is recorded");
+    let two = &rec.result;
+    // One spacing (Wigley's D/L is 0.1), one sound speed.
+    assert!((two.dx_over_l - 0.025).abs() < 1e-12, "2D+t dx/L {}", two.dx_over_l);
+    assert!(
+        (three.dx_over_l - two.dx_over_l).abs() < 1e-12,
+        "3D dx/L {}",
+        three.dx_over_l
+    );
+    assert!(
+        (three.c0_over_sqrt_gl - two.c0_over_sqrt_gl).abs() < 1e-9,
+        "c0 {} against {}",
+        three.c0_over_sqrt_gl,
+        two.c0_over_sqrt_gl
+    );
+    assert!(three.particles > 1000 && three.steps > 0 && three.travel_over_l >= 0.1 - 1e-9);
+    assert!(three.blow_up.is_none() && !three.steady);
+    let case = out.join("cases").join("01-fr0.500");
+    for f in [
+        "eta.csv",
+        "ship3d/summary.txt",
+        "ship3d/agreement.csv",
+        "ship3d/wave_pattern_difference.png",
+    ] {
+        assert!(case.join(f).is_file(), "{f} missing");
+    }
+    let csv = std::fs::read_to_string(out.join("ship3d.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 2, "{csv}");
+    assert!(csv.lines().nth(1).unwrap().starts_with("0.5,2.5"), "{csv}");
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(report.contains("## 3D against 2D+t"), "{report}");
+    // Run again: finished, skipped.
+    assert_eq!(runner::run_cases(&study, &serial_options(&out)).unwrap().finished, 0);
+}
+
+/// What a `[ship3d]` study refuses, by field: a `[resolution]` (its spacing is D/res), fewer than 4 particles
+/// over the draft, a 2D+t option that would give the two models different tanks, a case's own hull.
+#[test]
+fn a_3d_study_refuses_a_second_spacing_tank_or_hull() {
+    let dir = std::env::temp_dir().join("bowwave-study-ship3d-errors");
+    let cases: [(&str, &[&str]); 5] = [
+        (
+            "[resolution]\nlevel = \"coarse\"\n[ship3d]\nres = 5\n",
+            &["`resolution`", "D/res"],
+        ),
+        ("[ship3d]\nres = 3\n", &["ship3d.res", "≥ 4"]),
+        ("[ship3d]\nres = 5\nmin_travel = 0.1\n", &["ship3d.min_travel"]),
+        ("[ship3d]\nres = 5\n[config]\nwidth = 2\n", &["config.width", "one"]),
+        (
+            "[ship3d]\nres = 5\n[case.1]\nhull = \"other.csv\"\n",
+            &["case.1", "one hull"],
+        ),
+    ];
+    for (tail, wanted) in cases {
+        let body = format!("froude = [0.5]\n{tail}");
+        let e = error_of(&dir, &body);
+        assert!(wanted.iter().all(|w| e.contains(w)), "{body}: {e}");
+    }
+}

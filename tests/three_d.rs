@@ -430,7 +430,7 @@ fn wigley_at_rest_keeps_its_mass_its_fore_aft_symmetry_and_its_bits_on_one_and_t
 fn ship_too_fine_for_memory_or_in_a_tank_that_cuts_the_hull_is_refused() {
     use bowwave::compare3d::towed_ship::{plan, TowedShip};
     let hull = bowwave::validation::hull_at_rest::wigley();
-    let err = |opts: &TowedShip| format!("{:#}", plan(opts).err().expect("must be refused"));
+    let err = |opts: &TowedShip| format!("{:#}", plan(opts).expect_err("must be refused"));
     // D/dx 400: about 4.6e10 particles, some 100 TiB.
     let e = err(&TowedShip::new(hull.clone(), 0.5, 400.0));
     assert!(

@@ -174,6 +174,7 @@ pub const MEASURED_THROUGHPUT: f64 = 4.0e4;
 
 /// What a towed run will cost, before it runs: particles, hull ghosts, c0 and the steps to the shortest and the
 /// longest travel (the time step as the sound speed sets it, Δt = CFL h / c0).
+#[derive(Clone, Debug)]
 pub struct Plan {
     pub particles: usize,
     pub hull_ghosts: usize,
@@ -540,6 +541,24 @@ fn write_indexes(dir: &Path, frames: &[(f64, String)]) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The 2D+t wave pattern of a `bowwave twodt` output folder (its `eta.csv`), for [`compare`]; the error names the
+/// file and what was expected.
+pub fn read_twodt_eta(dir: &Path) -> anyhow::Result<Field> {
+    let path = dir.join("eta.csv");
+    let t = Table::read(&path)?;
+    let col = |c: &str| {
+        t.column(c)
+            .ok_or_else(|| anyhow::anyhow!("{}: no column '{c}', expected a twodt eta.csv", path.display()))
+    };
+    let (x, y, e) = (col("x_over_l")?, col("y_over_l")?, col("eta_over_d")?);
+    crate::analysis::wave_pattern::eta_field(&x, &y, &e).ok_or_else(|| {
+        anyhow::anyhow!(
+            "{}: fewer than two x/L or y/L values, expected a wave pattern",
+            path.display()
+        )
+    })
+}
+
 /// The 3D and 2D+t wave patterns compared column by column of the 3D map.
 pub struct Comparison {
     /// η_3D − η_2D+t over D, on the 3D map's grid (NaN where either is missing).
@@ -695,6 +714,16 @@ pub fn plots(r: &TowedResult, twodt: Option<(&Field, &Comparison)>, out: &Path) 
     Ok(files)
 }
 
+/// The local Froude number Fr_x = Fr/√(x/L) at `x` (L from the stem) for a table: "∞" at the stem, where a
+/// column's x is the stem's up to round-off.
+pub fn fr_x_text(fr: f64, x: f64) -> String {
+    if x > 1e-6 {
+        format!("{:.2}", fr / x.sqrt())
+    } else {
+        "∞".to_string()
+    }
+}
+
 /// A short report of the run and, with a 2D+t map, the verdict.
 pub fn summary(r: &TowedResult, c: Option<&Comparison>) -> String {
     let mut s = format!(
@@ -721,14 +750,14 @@ pub fn summary(r: &TowedResult, c: Option<&Comparison>) -> String {
         s += &format!("blew up: {b}\n");
     }
     if let Some(c) = c {
-        let fr_x = |x: f64| r.fr / x.sqrt();
+        let fr_x = |x: f64| fr_x_text(r.fr, x);
         s += &if c.bands.is_empty() {
             format!("3D and 2D+t agree within {AGREEMENT_OVER_D} D in η nowhere along the hull\n")
         } else {
             let bands: Vec<String> = c
                 .bands
                 .iter()
-                .map(|b| format!("x/L {:.3}–{:.3} (Fr_x {:.2}–{:.2})", b.0, b.1, fr_x(b.0), fr_x(b.1)))
+                .map(|b| format!("x/L {:.3}–{:.3} (Fr_x {}–{})", b.0, b.1, fr_x(b.0), fr_x(b.1)))
                 .collect();
             format!(
                 "3D and 2D+t agree within {AGREEMENT_OVER_D} D in η (every column across the tank) over {}\n",
@@ -737,7 +766,7 @@ pub fn summary(r: &TowedResult, c: Option<&Comparison>) -> String {
         };
         s += "x/L     max|Δη|/D   Fr_x\n";
         for col in &c.columns {
-            s += &format!("{:6.3}  {:9.3}  {:6.2}\n", col.0, col.1, col.2);
+            s += &format!("{:6.3}  {:9.3}  {:>6}\n", col.0, col.1, fr_x_text(r.fr, col.0));
         }
     }
     s

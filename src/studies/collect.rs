@@ -108,11 +108,108 @@ pub fn write_tables(
         )?;
     }
     write_atomic(&out.join("comparison.csv"), csv.as_bytes())?;
+    if recs.iter().any(|r| r.ship3d.is_some()) {
+        write_atomic(&out.join("ship3d.csv"), ship3d_csv(recs).as_bytes())?;
+    }
     write_atomic(
         &out.join("report.md"),
         report(study_name, hull, hull_status, hull_facts, recs, &comps, n_cases).as_bytes(),
     )?;
     Ok(())
+}
+
+/// `ship3d.csv`: one row per case with a 3D run: its cost, the two bow crests, and the first stretch of x/L over
+/// which 3D and 2D+t agree within 0.1 D (empty where they agree nowhere; `agreement` lists every stretch).
+pub fn ship3d_csv(recs: &[CaseRecord]) -> String {
+    let mut csv = String::from(
+        "fr,dx_over_l,c0_over_sqrt_gl,particles,hull_ghosts,steps,wall_seconds,travel_over_l,steady,crest_3d_over_d,\
+         crest_3d_x_over_l,crest_2dt_over_d,crest_2dt_x_over_l,agree_from_x_over_l,agree_to_x_over_l,agreement,blow_up\n",
+    );
+    for r in recs {
+        let Some(t) = &r.ship3d else { continue };
+        let first = t.agreement.first();
+        let stretches: Vec<String> = t.agreement.iter().map(|b| format!("{:.3}-{:.3}", b.0, b.1)).collect();
+        let _ = writeln!(
+            csv,
+            "{},{:.6e},{:.4},{},{},{},{:.1},{:.4},{},{},{},{},{},{},{},{},{}",
+            r.result.fr,
+            t.dx_over_l,
+            t.c0_over_sqrt_gl,
+            t.particles,
+            t.hull_ghosts,
+            t.steps,
+            t.wall_seconds,
+            t.travel_over_l,
+            t.steady,
+            cell(t.crest_over_d),
+            cell(t.crest_x_over_l),
+            cell(t.twodt_crest_over_d),
+            cell(t.twodt_crest_x_over_l),
+            cell(first.map(|b| b.0)),
+            cell(first.map(|b| b.1)),
+            stretches.join(" "),
+            t.blow_up.as_deref().unwrap_or("").replace(',', ";")
+        );
+    }
+    csv
+}
+
+/// The report's section on the 3D runs: per case, the crests and where the two models agree, with Fr_x.
+fn ship3d_section(s: &mut String, recs: &[CaseRecord]) {
+    let runs: Vec<_> = recs
+        .iter()
+        .filter_map(|r| r.ship3d.as_ref().map(|t| (r.result.fr, t)))
+        .collect();
+    if runs.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "\n## 3D against 2D+t (`ship3d.csv`; each case's maps and tables in `cases/NN-frF/ship3d/`)\n\n\
+         Both models at the same spacing, in the same tank (a channel, not open water) and at the same sound speed; \
+         η compared column by column across the whole tank, agreement within {} D.\n",
+        crate::compare3d::towed_ship::AGREEMENT_OVER_D
+    );
+    let _ = writeln!(
+        s,
+        "| Fr | dx/L | particles | steps | wall s | travel/L | bow steady | 3D crest η/D (x/L) | 2D+t crest η/D (x/L) | agree within 0.1 D over x/L (Fr_x) |"
+    );
+    let _ = writeln!(s, "|{}", "---|".repeat(10));
+    for (fr, t) in runs {
+        let crest = |h: Option<f64>, x: Option<f64>| match (h, x) {
+            (Some(h), Some(x)) => format!("{h:.3} ({x:.3})"),
+            _ => "–".into(),
+        };
+        let bands: Vec<String> = t
+            .agreement
+            .iter()
+            .map(|b| {
+                let fr_x = |x: f64| crate::compare3d::towed_ship::fr_x_text(fr, x);
+                format!("{:.3}–{:.3} ({}–{})", b.0, b.1, fr_x(b.0), fr_x(b.1))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "| {fr} | {:.2e} | {} | {} | {:.0} | {:.2} | {} | {} | {} | {} |",
+            t.dx_over_l,
+            t.particles,
+            t.steps,
+            t.wall_seconds,
+            t.travel_over_l,
+            match (&t.blow_up, t.steady) {
+                (Some(_), _) => "blew up",
+                (None, true) => "yes",
+                (None, false) => "no",
+            },
+            crest(t.crest_over_d, t.crest_x_over_l),
+            crest(t.twodt_crest_over_d, t.twodt_crest_x_over_l),
+            if bands.is_empty() {
+                "nowhere".to_string()
+            } else {
+                bands.join(", ")
+            }
+        );
+    }
 }
 
 /// The Markdown report: cases, comparison, and the published trends checked on our numbers.
@@ -220,6 +317,7 @@ pub fn report(
          follows the closure in their outputs (the cavity's collapse, the splash-up) is without the trapped air \
          (`docs/reference/method.md`, \"Several phases\")."
     );
+    ship3d_section(&mut s, recs);
     let _ = writeln!(s, "\n## Published trends, checked on our plunging cases\n");
     for line in trends(recs) {
         let _ = writeln!(s, "- {line}");

@@ -6,6 +6,7 @@ pub mod collect;
 pub mod figures;
 pub mod lock;
 pub mod runner;
+pub mod ship3d;
 pub mod status;
 pub mod study_file;
 

@@ -44,6 +44,9 @@ pub struct CaseRecord {
     /// records written before this field existed.
     #[serde(default)]
     pub git_commit: Option<String>,
+    /// The 3D run beside the 2D+t one, in a `[ship3d]` study.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ship3d: Option<super::ship3d::Ship3dRecord>,
 }
 
 /// Folder of a case.
@@ -70,6 +73,9 @@ pub struct Estimate {
     pub particles: usize,
     pub steps: f64,
     pub seconds: f64,
+    /// The 3D run of a `[ship3d]` case: its plan (particles, steps to the shortest and longest travel), priced
+    /// at [`crate::compare3d::towed_ship::MEASURED_THROUGHPUT`].
+    pub ship3d: Option<crate::compare3d::towed_ship::Plan>,
 }
 
 /// Builds each case's scene (no time step) to count its particles and estimate its steps (from the
@@ -84,18 +90,24 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
         .iter()
         .map(|spec| {
             let hull = case_surface(study, spec, None)?;
-            let scene = crate::twodt::scene::build(hull, &dry_run_config(spec))?;
+            let scene = crate::twodt::scene::build(hull.clone(), &dry_run_config(spec))?;
             let g = &scene.geom;
             let h = scene.sim.kernel.h;
             let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * g.c0, 1.0);
             let t = scene.profile.t_at(g.x_end);
             let particles = scene.sim.n_fluid();
             let steps = (t / dt).ceil();
+            let ship3d = spec
+                .ship3d
+                .as_ref()
+                .map(|ship| crate::compare3d::towed_ship::plan(&super::ship3d::towed(&hull, spec.fr(), ship)))
+                .transpose()?;
             Ok(Estimate {
                 spec: spec.clone(),
                 particles,
                 steps,
                 seconds: particles as f64 * steps / REFERENCE_THROUGHPUT,
+                ship3d,
             })
         })
         .collect()
@@ -172,7 +184,12 @@ pub(crate) fn write_manifest_locked(study: &Study, out: &Path) -> anyhow::Result
             ManifestCase {
                 spec,
                 status: match r {
-                    None if case_dir(out, spec).join(crate::twodt::checkpoint::FILE).exists() => {
+                    None if case_dir(out, spec).join(crate::twodt::checkpoint::FILE).exists()
+                        || case_dir(out, spec)
+                            .join(super::ship3d::DIR)
+                            .join(crate::compare3d::towed_checkpoint::FILE)
+                            .exists() =>
+                    {
                         "stopped part-way (checkpoint)"
                     }
                     None => "not run",
@@ -315,14 +332,32 @@ fn run_one(
             ..opts.checkpoint.clone()
         },
     };
-    let result = match run(hull, &spec.config, &topts)? {
+    let result = match run(hull.clone(), &spec.config, &topts)? {
         Ended::Ran(r) => r,
         Ended::Halted(h) => return Ok(Some(h)),
+    };
+    let ship3d = match &spec.ship3d {
+        None => None,
+        Some(ship) => {
+            let c = &opts.checkpoint;
+            match super::ship3d::run(
+                &hull,
+                spec.fr(),
+                ship,
+                &dir,
+                (c.every, c.wall_limit, opts.force),
+                opts.progress,
+            )? {
+                Ended::Ran(r) => Some(r),
+                Ended::Halted(h) => return Ok(Some(h)),
+            }
+        }
     };
     let rec = CaseRecord {
         spec: spec.clone(),
         result,
         git_commit: Some(env!("BOWWAVE_GIT_COMMIT").to_string()),
+        ship3d,
     };
     write_atomic(&dir.join("case.json"), serde_json::to_string_pretty(&rec)?.as_bytes())?;
     Ok(None)

@@ -22,6 +22,8 @@ pub struct StudyFile {
     pub hull: PathBuf,
     /// Ship Froude numbers U/√(gL), one case each.
     pub froude: Vec<f64>,
+    /// How dx/L is chosen; absent in a `[ship3d]` study, whose spacing is D/res.
+    #[serde(default)]
     pub resolution: Resolution,
     /// Options of every case, in the keys of `bowwave twodt` (`TwoDtConfig`; `--give-up-at` is
     /// `give_up_at`), except `fr` and `dx`, which `froude` and `[resolution]` set.
@@ -32,6 +34,95 @@ pub struct StudyFile {
     /// `generator = "athena"` and the generator parameters changed, e.g. `flare_angle = 20`).
     #[serde(default)]
     pub case: BTreeMap<String, toml::Table>,
+    /// A 3D study (`[ship3d]`): each case also tows the hull in 3D at the same spacing and compares the two wave
+    /// patterns (issue #31).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ship3d: Option<Ship3d>,
+}
+
+/// The 3D side of a study (`[ship3d]`): every case runs the towed ship of `bowwave ship` and its 2D+t partner at
+/// one spacing dx = D/res, in one tank (half width, depth) and at one sound speed (the 2D+t rule), then compares
+/// the two wave patterns. The keys and defaults are `bowwave ship`'s options of the same names.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Ship3d {
+    /// Particles over the draft, D/dx, of both models (at least 4: the 2D+t scene's bound).
+    pub res: f64,
+    /// Ramp from rest to U over this distance, L (0.25: `bowwave ship`'s).
+    #[serde(default = "Ship3d::default_ramp")]
+    pub ramp: f64,
+    /// Shortest distance travelled, L (1.5: the stern has passed the stem's start by half a length).
+    #[serde(default = "Ship3d::default_min_travel")]
+    pub min_travel: f64,
+    /// Longest distance travelled, L (2.5).
+    #[serde(default = "Ship3d::default_travel")]
+    pub travel: f64,
+    /// The bow is steady when its crest moved by less than this, D, over `steady_over` (0.02).
+    #[serde(default = "Ship3d::default_steady_tol")]
+    pub steady_tol: f64,
+    /// The stretch of travel for the steadiness test, L (0.25).
+    #[serde(default = "Ship3d::default_steady_over")]
+    pub steady_over: f64,
+    /// The tank's half width, in B, of both models (4: thesis §10.1.2).
+    #[serde(default = "Ship3d::default_half_width")]
+    pub half_width: f64,
+    /// The water's depth, in D, of both models (2: thesis §10.1.2).
+    #[serde(default = "Ship3d::default_depth")]
+    pub depth: f64,
+}
+
+impl Ship3d {
+    fn default_ramp() -> f64 {
+        0.25
+    }
+    fn default_min_travel() -> f64 {
+        1.5
+    }
+    fn default_travel() -> f64 {
+        2.5
+    }
+    fn default_steady_tol() -> f64 {
+        0.02
+    }
+    fn default_steady_over() -> f64 {
+        0.25
+    }
+    fn default_half_width() -> f64 {
+        4.0
+    }
+    fn default_depth() -> f64 {
+        2.0
+    }
+
+    /// The first field out of range, as (key, expected).
+    fn check(&self) -> Option<(&'static str, &'static str)> {
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        if !(self.res.is_finite() && self.res >= 4.0) {
+            return Some(("res", "D/dx ≥ 4 (the 2D+t partner needs 4 particles over the draft)"));
+        }
+        if !positive(self.ramp) {
+            return Some(("ramp", "a distance in L > 0"));
+        }
+        if !(positive(self.min_travel) && self.min_travel > self.ramp) {
+            return Some(("min_travel", "a distance in L beyond the ramp"));
+        }
+        if !(self.travel.is_finite() && self.travel >= self.min_travel) {
+            return Some(("travel", "a distance in L ≥ min_travel"));
+        }
+        if !positive(self.steady_tol) {
+            return Some(("steady_tol", "a height in D > 0"));
+        }
+        if !positive(self.steady_over) {
+            return Some(("steady_over", "a distance in L > 0"));
+        }
+        if !(self.half_width.is_finite() && self.half_width > 0.5) {
+            return Some(("half_width", "a half width in B > 0.5 (beyond the hull)"));
+        }
+        if !(self.depth.is_finite() && self.depth > 1.0) {
+            return Some(("depth", "a depth in D > 1 (below the keel)"));
+        }
+        None
+    }
 }
 
 /// How dx_f/L is chosen: exactly one of `dx` (one value per Froude number), `rule = "auto"` (H_pj/dx > 20,
@@ -99,6 +190,9 @@ pub struct CaseSpec {
     /// The whole configuration of the case: the defaults, the study's `[config]`, the case's `[case.N]`,
     /// its Froude number and its spacing.
     pub config: TwoDtConfig,
+    /// The 3D run beside the 2D+t one, in a `[ship3d]` study.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ship3d: Option<Ship3d>,
 }
 
 impl CaseSpec {
@@ -199,13 +293,25 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
     }
     let r = &s.resolution;
     let given = r.dx.is_some() as u8 + r.rule.is_some() as u8 + r.level.is_some() as u8;
-    if given != 1 {
+    if let Some(ship) = &s.ship3d {
+        if given != 0 {
+            return err(
+                "resolution",
+                "no [resolution] in a [ship3d] study: both models run at dx = D/res (`ship3d.res`)",
+            );
+        }
+        if let Some((key, expected)) = ship.check() {
+            return Err((format!("ship3d.{key}"), expected.to_string()));
+        }
+    } else if given != 1 {
         return err(
             "resolution",
             "exactly one of `dx = [...]` (one dx/L per Froude number), `rule = \"auto\"` or `level = \"coarse\" | \"medium\" | \"fine\"`",
         );
     }
-    let dxs: Vec<f64> = if let Some(dx) = &r.dx {
+    let dxs: Vec<f64> = if let Some(ship) = &s.ship3d {
+        vec![draft / ship.res; s.froude.len()]
+    } else if let Some(dx) = &r.dx {
         if dx.len() != s.froude.len() {
             return Err((
                 "resolution.dx".into(),
@@ -216,10 +322,10 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
                 ),
             ));
         }
-        if dx.iter().any(|d| !(d.is_finite() && *d > 0.0 && *d < draft / 4.0)) {
+        if dx.iter().any(|d| !(d.is_finite() && *d > 0.0 && *d <= draft / 4.0)) {
             return Err((
                 "resolution.dx".into(),
-                format!("values in (0, D/4 = {:.4e})", draft / 4.0),
+                format!("values in (0, D/4 = {:.4e}]", draft / 4.0),
             ));
         }
         dx.clone()
@@ -235,9 +341,30 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             .map(|&fr| estimated_hpj_over_d(fr) * draft / level.h_over_dx())
             .collect()
     };
-    let base = TwoDtConfig::default()
+    let mut base = TwoDtConfig::default()
         .with_overrides(&s.config)
         .map_err(|e| ("config".to_string(), e))?;
+    if let Some(ship) = &s.ship3d {
+        // One tank, one spacing and one sound speed for both models: the 2D+t partner's are set here.
+        for (k, table) in std::iter::once(("config".to_string(), &s.config))
+            .chain(s.case.iter().map(|(k, t)| (format!("case.{k}"), t)))
+        {
+            for key in SHIP3D_SETS {
+                if table.contains_key(*key) {
+                    return Err((
+                        format!("{k}.{key}"),
+                        "no `ratio`, `width`, `depth`, `until` or `c0` in a [ship3d] study: both models share one \
+                         uniform tank (`ship3d.half_width`, `ship3d.depth`), run to the transom at the 2D+t sound speed"
+                            .into(),
+                    ));
+                }
+            }
+        }
+        base.coarse_ratio = 1.0;
+        base.width_over_beam = ship.half_width;
+        base.depth_over_draft = ship.depth;
+        base.until = Until::Transom;
+    }
     for (key, field) in [("fr", "froude"), ("dx", "resolution")] {
         if s.config.contains_key(key) {
             return Err((format!("config.{key}"), format!("no `{key}` here: `{field}` sets it")));
@@ -263,6 +390,14 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
         }
         let mut table = table.clone();
         hulls[index - 1] = case_hull(&mut table, k, &s.hull)?;
+        if s.ship3d.is_some() && hulls[index - 1] != CaseHull::File(s.hull.clone()) {
+            return Err((
+                format!("case.{k}"),
+                "no `hull` or `hull_variant` in a [ship3d] study: its spacing is the study hull's D/res, one hull \
+                 for every case (write one study per hull)"
+                    .into(),
+            ));
+        }
         overrides[index - 1] = Some(table);
     }
     let mut cases = Vec::with_capacity(s.froude.len());
@@ -301,10 +436,14 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
             index: k + 1,
             hull: hulls[k].clone(),
             config,
+            ship3d: s.ship3d.clone(),
         });
     }
     Ok(cases)
 }
+
+/// The 2D+t options a `[ship3d]` study sets itself (the tank, the stop, the sound speed).
+const SHIP3D_SETS: &[&str] = &["ratio", "width", "depth", "until", "c0"];
 
 /// Takes a case's own hull out of its `[case.N]` table: `hull = "FILE"` or `[case.N.hull_variant]`; the
 /// study's hull when it has neither. The variant's generator and keys are checked here, its calibration is

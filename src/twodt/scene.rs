@@ -124,8 +124,8 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     cfg.check()?;
     let dx_f = cfg.dx.unwrap_or_else(|| auto_dx(cfg.fr, draft));
     anyhow::ensure!(
-        dx_f > 0.0 && dx_f < draft / 4.0,
-        "dx/L: expected in (0, D/4 = {}), got {dx_f}",
+        dx_f > 0.0 && dx_f <= draft / 4.0,
+        "dx/L: expected in (0, D/4 = {}], at least 4 particles over the draft, got {dx_f}",
         draft / 4.0
     );
     let dx_c = cfg.coarse_ratio * dx_f;
@@ -351,5 +351,28 @@ mod tests {
         assert!((got / exact - 1.0).abs() < 0.01, "expected speed {got} against {exact}");
         // Above the free fall of the crest, which would otherwise decide.
         assert!(exact > (2.0 * estimated_hpj_over_d(fr) * d).sqrt());
+    }
+
+    /// The 3D ship pairs with a 2D+t run at the same spacing, `--dx (D/L)/res`; at D/dx 4 that is the bound
+    /// itself. Regression: the bound was open, so `twodt --dx (D/L)/4` was refused and the 3D run at D/dx 4 had
+    /// no 2D+t partner at its spacing.
+    #[test]
+    fn four_particles_over_the_draft_are_accepted_and_fewer_refused() {
+        let spec = wigley::WigleySpec::default();
+        let hull = Arc::new(HullSurface::new(&wigley::wigley(&spec)));
+        let draft = hull.meta.draft_m / hull.meta.length_m;
+        let mut cfg = TwoDtConfig {
+            fr: 0.5,
+            dx: Some(draft / 4.0),
+            ..TwoDtConfig::default()
+        };
+        cfg.coarse_ratio = 1.0;
+        assert!(build(hull.clone(), &cfg).is_ok());
+        cfg.dx = Some(draft / 3.9);
+        let e = build(hull, &cfg)
+            .err()
+            .expect("a spacing over D/4 is refused")
+            .to_string();
+        assert!(e.contains("dx/L") && e.contains("D/4"), "{e}");
     }
 }

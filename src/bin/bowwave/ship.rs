@@ -1,12 +1,10 @@
 //! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
 
 use crate::options::{halted, minutes, BLEW_UP};
-use bowwave::analysis::wave_pattern::eta_field;
 use bowwave::compare3d::towed_ship::{self, CheckpointPolicy, TowedShip};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::io::atomic::write_atomic;
-use bowwave::io::csv_table::Table;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -83,24 +81,7 @@ impl ShipArgs {
         let name = offsets.meta.name.clone();
         let hull = HullSurface::new(&offsets);
         // The 2D+t map first: a wrong folder fails before an hour of 3D.
-        let twodt = match &self.twodt {
-            None => None,
-            Some(dir) => {
-                let path = dir.join("eta.csv");
-                let t = Table::read(&path)?;
-                let col = |c: &str| {
-                    t.column(c)
-                        .ok_or_else(|| anyhow::anyhow!("{}: no column '{c}', expected a twodt eta.csv", path.display()))
-                };
-                let (x, y, e) = (col("x_over_l")?, col("y_over_l")?, col("eta_over_d")?);
-                Some(eta_field(&x, &y, &e).ok_or_else(|| {
-                    anyhow::anyhow!(
-                        "{}: fewer than two x/L or y/L values, expected a wave pattern",
-                        path.display()
-                    )
-                })?)
-            }
-        };
+        let twodt = self.twodt.as_deref().map(towed_ship::read_twodt_eta).transpose()?;
         let mut opts = TowedShip::new(hull.clone(), self.fr, self.res);
         opts.ramp_over_l = self.ramp;
         opts.max_travel_over_l = self.travel;

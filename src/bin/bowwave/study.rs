@@ -119,6 +119,19 @@ fn print_dry_run(study: &studies::study_file::Study) -> anyhow::Result<()> {
             e.steps,
             e.seconds
         );
+        if let Some(p) = &e.ship3d {
+            let rate = bowwave::compare3d::towed_ship::MEASURED_THROUGHPUT;
+            println!(
+                "      3D: {} particles, {} hull ghosts, {:.0}–{:.0} steps, {:.1}–{:.1} h at {rate:.1e} particle-steps/s \
+                 (the towed ship's measured rate on 2 threads)",
+                p.particles,
+                p.hull_ghosts,
+                p.steps_min,
+                p.steps_max,
+                p.particles as f64 * p.steps_min / rate / 3600.0,
+                p.particles as f64 * p.steps_max / rate / 3600.0
+            );
+        }
     }
     println!(
         "total {:.0} s at {:.1e} particle-steps/s (the measured 2D+t throughput on 2 cores; a plunge search \
