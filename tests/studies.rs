@@ -704,6 +704,28 @@ fn a_3d_study_tows_the_hull_beside_its_2dt_partner_at_one_spacing() {
     assert!(report.contains("## 3D against 2D+t"), "{report}");
     // Run again: finished, skipped.
     assert_eq!(runner::run_cases(&study, &serial_options(&out)).unwrap().finished, 0);
+    // A 3D run stopped part-way is told apart by `--status`: its record gone, its checkpoint after 3 steps.
+    let spec = &study.cases[0];
+    let surface =
+        bowwave::geometry::surface::HullSurface::new(&bowwave::geometry::hull_file::HullOffsets::read(&hull).unwrap());
+    let mut towed = bowwave::studies::ship3d::towed(&surface, spec.fr(), spec.ship3d.as_ref().unwrap());
+    towed.checkpoint = Some(bowwave::compare3d::towed_ship::CheckpointPolicy {
+        dir: case.join("ship3d"),
+        every: std::time::Duration::MAX,
+        wall_limit: None,
+        halt_at_step: Some(3),
+    });
+    assert!(matches!(
+        bowwave::compare3d::towed_ship::run(&towed, false).unwrap(),
+        bowwave::driver::Ended::Halted(_)
+    ));
+    std::fs::remove_file(case.join("case.json")).unwrap();
+    match &bowwave::studies::status::status(&study, &out).unwrap()[0].state {
+        bowwave::studies::status::CaseState::Ship3dInProgress(p) => {
+            assert!(p.same_configuration && p.steps >= 3, "{p:?}")
+        }
+        other => panic!("expected a 3D run in progress, got {other:?}"),
+    }
 }
 
 /// What a `[ship3d]` study refuses, by field: a `[resolution]` (its spacing is D/res), fewer than 4 particles

@@ -103,3 +103,29 @@ pub fn restore(path: &Path, fingerprint: &str, sim: &mut Simulation<3>) -> anyho
     });
     Ok(Some(h.progress))
 }
+
+/// Where a saved run stands, read from its checkpoint without restoring it (`bowwave study --status`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Peek {
+    /// Whether the checkpoint is of this configuration (a run goes on from it) or of another (a run starts
+    /// afresh).
+    pub same_configuration: bool,
+    pub steps: u64,
+    /// Travel (L) at the last bow sample, 0 before the ramp ended.
+    pub travel_over_l: f64,
+    /// Wall seconds of the sessions so far.
+    pub wall_seconds: f64,
+}
+
+/// Reads the header of the checkpoint at `path` against the configuration's `fingerprint`.
+pub fn peek(path: &Path, fingerprint: &str) -> anyhow::Result<Peek> {
+    let c = Checkpoint::read(path)?;
+    let h: Header = serde_json::from_value(c.header.clone())
+        .map_err(|e| anyhow::anyhow!("checkpoint {}: header: {e}", path.display()))?;
+    Ok(Peek {
+        same_configuration: h.fingerprint == fingerprint,
+        steps: h.steps,
+        travel_over_l: h.progress.bow.last().map_or(0.0, |b| b.0),
+        wall_seconds: h.progress.wall_before,
+    })
+}

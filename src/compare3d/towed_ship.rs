@@ -135,7 +135,7 @@ pub const BOW_REGION: (f64, f64) = (-0.05, 0.5);
 
 impl TowedShip {
     /// What identifies the configuration (a checkpoint of another one is not resumed).
-    fn fingerprint(&self) -> String {
+    pub fn fingerprint(&self) -> String {
         format!(
             "{} fr {} D/dx {} ramp {} travel {}–{} steady {} over {} sample {} behind {} tank {} B {} D",
             self.hull.meta.name,

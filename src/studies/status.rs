@@ -16,6 +16,8 @@ pub enum CaseState {
     /// Stopped part-way with a checkpoint (of this configuration or, if `same_configuration` is false, of an
     /// earlier one that a run would overwrite).
     InProgress(CheckpointProgress),
+    /// A `[ship3d]` case whose 2D+t partner has run and whose 3D run stopped part-way with a checkpoint.
+    Ship3dInProgress(crate::compare3d::towed_checkpoint::Peek),
     /// A finished record exists but of another configuration: the case runs again.
     OtherConfiguration,
     NotStarted,
@@ -36,8 +38,18 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
         .iter()
         .map(|spec| {
             let dir = case_dir(out, spec);
+            let ship_checkpoint = dir
+                .join(super::ship3d::DIR)
+                .join(crate::compare3d::towed_checkpoint::FILE);
             let state = if let Some(rec) = finished(out, spec) {
                 CaseState::Finished(Box::new(rec))
+            } else if let Some(ship) = spec.ship3d.as_ref().filter(|_| ship_checkpoint.exists()) {
+                let hull = case_surface(study, spec, None)?;
+                let fingerprint = super::ship3d::towed(&hull, spec.fr(), ship).fingerprint();
+                CaseState::Ship3dInProgress(crate::compare3d::towed_checkpoint::peek(
+                    &ship_checkpoint,
+                    &fingerprint,
+                )?)
             } else if dir.join(crate::twodt::checkpoint::FILE).exists() {
                 let hull_surface = case_surface(study, spec, None)?;
                 match crate::twodt::run::progress(&hull_surface, &spec.config, &dir)? {

@@ -204,6 +204,17 @@ fn print_status(study: &studies::study_file::Study, out: &std::path::Path) -> an
                     if p.same_configuration { left } else { String::new() },
                 )
             }
+            CaseState::Ship3dInProgress(p) => format!(
+                "{}: {} steps, {:.2} L travelled at the last bow sample, {:.2} h wall",
+                if p.same_configuration {
+                    "3D run in progress (its 2D+t partner runs again first, to the same bits)"
+                } else {
+                    "3D checkpoint of another configuration (a run starts afresh)"
+                },
+                p.steps,
+                p.travel_over_l,
+                p.wall_seconds / 3600.0
+            ),
             CaseState::OtherConfiguration => "finished with another configuration: runs again".into(),
             CaseState::NotStarted => "not started".into(),
         };
