@@ -15,8 +15,10 @@
 //!   closed domain: at a free surface it pulls the particles inwards. The solver's pressures (sensors,
 //!   outputs, the ghosts' Neumann condition) are the state equation's, p_b apart; p_b enters the forces only,
 //!   as p_i + p_j + 2 p_b, where a constant does not change the continuous pressure gradient.
-//! - **Diffusion and viscosity** act within a phase only (the sums of eq. 21 over j ∈ χ), with the phase's
-//!   c0χ and ρ0χ, so the density jump at the interface is not smeared. The renormalised density gradient
+//! - **Diffusion and artificial viscosity** act within a phase only (the sums of eq. 21 over j ∈ χ), with the
+//!   phase's c0χ and ρ0χ, so the density jump at the interface is not smeared. A physical viscosity acts across
+//!   the interface too, with the harmonic mean of the two μ (Grenier et al. eq. 22,
+//!   [`viscosity::pair_coefficient`]). The renormalised density gradient
 //!   (their eq. 18) is taken over the same phase too.
 //! - **Momentum**: −(1/ρ̃_i) Σ_j (p_i + p_j) ∇W_ij V_j over all phases (their eq. 14), with ρ̃_i = m_i/V_i in
 //!   front so that the pairwise forces V_i V_j (p_i + p_j)∇W_ij stay equal and opposite (exact conservation of
@@ -205,7 +207,6 @@ pub(super) fn rates<const D: usize>(
             } else {
                 cfg.delta * eos.c0 * h
             };
-            let visc = cfg.viscosity.coefficient(D, eos.rho0, h, eos.c0);
             let p_b = mf.background_pressure;
             let (rt_i, rho_i, u_i, p_i) = (st.rho_tilde[i], st.rho[i], st.vel[i], st.pressure[i] + p_b);
             let mut drho = 0.0;
@@ -254,10 +255,16 @@ pub(super) fn rates<const D: usize>(
                         );
                         drho += diff * (rt_i / rho_i) * psi.dot(&gw) * v_j;
                     }
+                }
+                let rho0_j = mf.eos(k_j).rho0;
+                if let Some(visc) =
+                    viscosity::pair_coefficient(&cfg.viscosity, D, h, (eos.rho0, eos.c0), rho0_j, k_j == k)
+                {
                     let pi = viscosity::pi_ij(&u_ji, &rij, r2, h);
                     dvel += viscosity::viscous_acceleration(visc, rt_i, pi, &gw, v_j);
                     max_pi = max_pi.max(pi.abs());
-                } else if mf.interface_repulsion > 0.0 {
+                }
+                if k_j != k && mf.interface_repulsion > 0.0 {
                     dvel += interface_repulsion(mf.interface_repulsion, p_i, p_j, rt_i, &gw, v_j);
                 }
             }
