@@ -240,21 +240,19 @@ pub(super) fn rates<const D: usize>(
                 let u_ji = u_j - u_i;
                 drho += continuity::velocity_divergence(rt_i, &u_ji, &gw, v_j);
                 dvel += pressure_force::pressure_acceleration(p_i, p_j, rt_i, &gw, v_j);
-                if k_j == k {
-                    if diff > 0.0 {
-                        // dV_i/dt ⊃ −δhc0 V_i ψ·∇W V_j / ρ_i (eq. 20) is dρ̃_i/dt ⊃ δhc0 (ρ̃_i/ρ_i) ψ·∇W V_j.
-                        let psi = density_diffusion::psi_with_factor(
-                            cfg.diffusion,
-                            factor,
-                            rho_i,
-                            rho_j,
-                            &rij,
-                            r2,
-                            &st.grad_rho[i],
-                            &grad_j,
-                        );
-                        drho += diff * (rt_i / rho_i) * psi.dot(&gw) * v_j;
-                    }
+                if k_j == k && diff > 0.0 {
+                    // dV_i/dt ⊃ −δhc0 V_i ψ·∇W V_j / ρ_i (eq. 20) is dρ̃_i/dt ⊃ δhc0 (ρ̃_i/ρ_i) ψ·∇W V_j.
+                    let psi = density_diffusion::psi_with_factor(
+                        cfg.diffusion,
+                        factor,
+                        rho_i,
+                        rho_j,
+                        &rij,
+                        r2,
+                        &st.grad_rho[i],
+                        &grad_j,
+                    );
+                    drho += diff * (rt_i / rho_i) * psi.dot(&gw) * v_j;
                 }
                 let rho0_j = mf.eos(k_j).rho0;
                 if let Some(visc) =
