@@ -315,3 +315,20 @@ fn references_name_a_probe_column_and_a_readable_file() {
     assert_eq!(CaseFile::read(&case).unwrap().references.len(), 1);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A block's cut curve (the Rayleigh–Taylor interface) needs a positive wavelength, and two blocks of different
+/// phases cut by different curves, or on the same side of one, overlap and are refused.
+#[test]
+fn a_cut_block_needs_a_wavelength_and_blocks_cut_apart_must_be_cut_by_one_curve() {
+    let rt = std::fs::read_to_string("cases/rayleigh-taylor.toml").unwrap();
+    let e = err_of(&rt.replace("wavelength = 1.0", "wavelength = 0.0"));
+    assert!(e.contains("blocks[0].cut") && e.contains("wavelength"), "{e}");
+    let e = err_of(&rt.replacen("keep = \"above\"", "keep = \"below\"", 1));
+    assert!(e.contains("blocks[1]") && e.contains("overlap"), "{e}");
+    let e = err_of(&rt.replacen(
+        "amplitude = -0.15, wavelength = 1.0, keep = \"above\"",
+        "amplitude = -0.10, wavelength = 1.0, keep = \"above\"",
+        1,
+    ));
+    assert!(e.contains("blocks[1]") && e.contains("overlap"), "{e}");
+}

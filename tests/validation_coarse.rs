@@ -431,3 +431,34 @@ fn two_phase_drop_at_density_ratio_2_follows_the_exact_solution() {
     assert_eq!(checks.iter().filter(|c| c.tolerance.is_some()).count(), 2);
     assert_checks(&checks);
 }
+
+/// The Rayleigh–Taylor start (`cases/rayleigh-taylor.toml`, issue #32): at H'/dx 20 the two blocks cut by the
+/// curve y = 1 − 0.15 sin 2πx fill the 20 × 40 lattice once (no point in both, none left out), the light fluid
+/// below the curve and the heavy one above, and each particle starts with the two-layer hydrostatic pressure
+/// (heavy: 1.8 g (2 − y); light: the heavy column's weight at its x plus 1.0 g (y_c − y)), so that the pressure
+/// is continuous across the interface.
+#[test]
+fn rayleigh_taylor_starts_with_a_sinusoidal_interface_and_the_two_layer_pressure() {
+    let case = bowwave::cases::case_file::CaseFile::read(std::path::Path::new("cases/rayleigh-taylor.toml")).unwrap();
+    let sim = bowwave::cases::setup::build(&case, Some(20.0)).unwrap();
+    let f = &sim.fluid;
+    assert_eq!(f.pos.len(), 800);
+    let curve = |x: f64| 1.0 - 0.15 * (2.0 * std::f64::consts::PI * x).sin();
+    let p = sim.state_pressures();
+    let mut worst = 0.0f64;
+    for ((pos, &phase), &p) in f.pos.iter().zip(&f.phase).zip(&p) {
+        let (x, y) = (pos.x, pos.y);
+        let (heavy, yc) = (phase == 0, curve(x));
+        assert_eq!(heavy, y >= yc, "particle at ({x}, {y}) of phase {phase}");
+        let exact = if heavy {
+            1.8 * (2.0 - y)
+        } else {
+            1.8 * (2.0 - yc) + (yc - y)
+        };
+        worst = worst.max((p - exact).abs());
+    }
+    assert!(
+        worst < 1e-9 * 3.6,
+        "largest departure from the two-layer pressure {worst} Pa"
+    );
+}

@@ -294,6 +294,9 @@ pub enum BlockSpec {
         velocity: Option<Vec<f64>>,
         #[serde(default)]
         velocity_gradient: Option<Vec<Vec<f64>>>,
+        /// Keep only the lattice points on one side of a sinusoidal curve: an interface that is not flat.
+        #[serde(default)]
+        cut: Option<CutSpec>,
     },
     /// Particles on concentric rings of spacing dx inside a disc (m), or inside the annulus between
     /// `inner_radius` and `radius`.
@@ -316,6 +319,43 @@ pub enum BlockSpec {
     },
 }
 
+/// The curve y = y + amplitude sin(2π x / wavelength) (m) that cuts a rectangular block, and which side of it
+/// the block keeps: the Rayleigh–Taylor set-up's interface y = 1 − 0.15 sin 2πx is `y = 1.0, amplitude = -0.15,
+/// wavelength = 1.0`, the light fluid's block keeping `below`, the heavy one's `above`. Two blocks cut by the same
+/// curve on opposite sides do not overlap. Under a cut kept `below`, the block's top (where a hydrostatic
+/// pressure's `top` applies) is the curve.
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct CutSpec {
+    pub y: f64,
+    pub amplitude: f64,
+    pub wavelength: f64,
+    pub keep: CutSide,
+}
+
+/// The side of a [`CutSpec`]'s curve a block keeps.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum CutSide {
+    Below,
+    Above,
+}
+
+impl CutSpec {
+    /// The curve's height at `x` (m).
+    pub fn height(&self, x: f64) -> f64 {
+        self.y + self.amplitude * (2.0 * std::f64::consts::PI * x / self.wavelength).sin()
+    }
+
+    /// Whether the block keeps the point (x, y).
+    pub fn keeps(&self, x: f64, y: f64) -> bool {
+        match self.keep {
+            CutSide::Below => y < self.height(x),
+            CutSide::Above => y >= self.height(x),
+        }
+    }
+}
+
 #[derive(Clone, Debug, Serialize, Deserialize, Default, PartialEq)]
 #[serde(tag = "kind", rename_all = "kebab-case", deny_unknown_fields)]
 pub enum PressureSpec {
@@ -327,6 +367,10 @@ pub enum PressureSpec {
     Hydrostatic {
         #[serde(default)]
         top: f64,
+        /// The weight of another fluid above the block's top, up to a level: `{ rho0 = 1.8, up_to = 2.0 }` adds
+        /// ρ0 g (up_to − y_top) to `top`, where y_top may vary along a cut block's curve (kg/m³, m).
+        #[serde(default)]
+        overburden: Option<Overburden>,
     },
     /// p = p_rim + (p_centre − p_rim)(1 − |x − c|²/R²) (Pa), R the block's radius (half diagonal for a
     /// rectangle): the initial pressure of the drops; `p_rim` default 0 (a free surface at R).
@@ -335,6 +379,14 @@ pub enum PressureSpec {
         #[serde(default)]
         p_rim: f64,
     },
+}
+
+/// A layer of another fluid above a block ([`PressureSpec::Hydrostatic`]).
+#[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Overburden {
+    pub rho0: f64,
+    pub up_to: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize, Default)]
@@ -797,6 +849,7 @@ impl CaseFile {
                     max,
                     velocity,
                     velocity_gradient,
+                    cut,
                     ..
                 } => {
                     if !vec_ok(min) || !vec_ok(max) || (0..d).any(|i| min[i] >= max[i]) {
@@ -807,6 +860,18 @@ impl CaseFile {
                     }
                     if !inside(min, 0.0) || !inside(max, 0.0) {
                         return Err(err(&format!("blocks[{k}]"), "a rectangle inside the domain (m)"));
+                    }
+                    if let Some(c) = cut {
+                        if !(c.y.is_finite()
+                            && c.amplitude.is_finite()
+                            && c.wavelength.is_finite()
+                            && c.wavelength > 0.0)
+                        {
+                            return Err(err(
+                                &format!("blocks[{k}].cut"),
+                                "finite `y` and `amplitude` (m) and a `wavelength` > 0 (m)",
+                            ));
+                        }
                     }
                     (velocity, velocity_gradient)
                 }
@@ -1017,6 +1082,12 @@ fn blocks_overlap(a: &BlockSpec, b: &BlockSpec) -> bool {
             ..
         } => Shape::Disc([centre[0], centre[1]], *inner_radius, *radius),
     };
+    // Two rectangles cut by the same curve, one kept below it and one above, share no area.
+    if let (BlockSpec::Rectangle { cut: Some(ca), .. }, BlockSpec::Rectangle { cut: Some(cb), .. }) = (a, b) {
+        if (ca.y, ca.amplitude, ca.wavelength) == (cb.y, cb.amplitude, cb.wavelength) && ca.keep != cb.keep {
+            return false;
+        }
+    }
     let eps = 1e-12;
     match (shape(a), shape(b)) {
         (Shape::Rect(lo1, hi1), Shape::Rect(lo2, hi2)) => (0..2).all(|k| lo1[k].max(lo2[k]) < hi1[k].min(hi2[k]) - eps),

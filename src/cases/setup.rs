@@ -1,7 +1,7 @@
 //! Turns a [`CaseFile`] into a ready-to-run 2D [`Simulation`]: particles on the lattice (rectangles) or on
 //! concentric rings (discs), initial pressure and density, walls as ghost layers.
 
-use super::case_file::{BlockSpec, BodyForceSpec, CaseFile, PressureSpec};
+use super::case_file::{BlockSpec, BodyForceSpec, CaseFile, CutSide, PressureSpec};
 use crate::sph::multi_fluid::{equal_stiffness_sound_speed, MultiFluid, Phase};
 use crate::sph::{
     body_force::BodyForce,
@@ -112,6 +112,7 @@ pub fn fluid(case: &CaseFile, dx: f64, phase_eos: &[Eos], body: &BodyForce<2>) -
                 pressure,
                 velocity,
                 velocity_gradient,
+                cut,
             } => {
                 let k = case
                     .phase_index(phase.as_deref())
@@ -124,9 +125,20 @@ pub fn fluid(case: &CaseFile, dx: f64, phase_eos: &[Eos], body: &BodyForce<2>) -
                 for j in 0..ny {
                     for i in 0..nx {
                         let x = lo + V2::new((i as f64 + 0.5) * dx, (j as f64 + 0.5) * dx);
+                        if cut.as_ref().is_some_and(|c| !c.keeps(x.x, x.y)) {
+                            continue;
+                        }
+                        // The block's top at this x: its rectangle's, or the curve it is cut below.
+                        let y_top = match cut {
+                            Some(c) if c.keep == CutSide::Below => c.height(x.x).min(hi.y),
+                            _ => hi.y,
+                        };
                         let p = match pressure {
                             PressureSpec::Zero => 0.0,
-                            PressureSpec::Hydrostatic { top } => top + eos.rho0 * g_down * (hi.y - x.y),
+                            PressureSpec::Hydrostatic { top, overburden } => {
+                                let over = overburden.as_ref().map_or(0.0, |o| o.rho0 * g_down * (o.up_to - y_top));
+                                top + over + eos.rho0 * g_down * (y_top - x.y)
+                            }
                             PressureSpec::Paraboloid { p_centre, p_rim } => {
                                 p_rim
                                     + (p_centre - p_rim)
