@@ -399,6 +399,11 @@ pub struct Probes {
     /// Record the front (largest x of the fluid).
     #[serde(default)]
     pub front: bool,
+    /// Record the tips of an unstable interface between the `[fluid]` (heavy, above) and the first of
+    /// `[[phases]]` (light, below), as Rayleigh–Taylor studies read it: `spike_y`, the lowest particle of the
+    /// `[fluid]` minus dx/2, and `bubble_y`, the highest particle of the light phase plus dx/2 (m).
+    #[serde(default)]
+    pub interface_tips: bool,
     /// Watch for the first air cavity closed by a plunging jet (`cases::cavity_probe`).
     #[serde(default)]
     pub cavity: Option<CavityProbeSpec>,
@@ -573,6 +578,9 @@ impl CaseFile {
         if self.probes.front {
             c.extend(["front".to_string(), "front_star".to_string()]);
         }
+        if self.probes.interface_tips {
+            c.extend(["spike_y".to_string(), "bubble_y".to_string()]);
+        }
         for p in &self.probes.pressure {
             c.extend(pressure_columns(p));
         }
@@ -641,6 +649,12 @@ impl CaseFile {
             return Err(err(
                 "multi_fluid.interface_repulsion",
                 "a non-negative ε_I (Grenier et al.: 0.01–0.1; 0 is off)",
+            ));
+        }
+        if self.probes.interface_tips && self.phases.is_empty() {
+            return Err(err(
+                "probes.interface_tips",
+                "a case with `[[phases]]`: the tips are those of the interface between the `[fluid]` and the first phase",
             ));
         }
         let mut used = vec![false; self.phases.len() + 1];

@@ -78,6 +78,10 @@ fn columns(case: &CaseFile, nwalls: usize) -> Vec<String> {
         c.push("front".into());
         c.push("front_star".into());
     }
+    if case.probes.interface_tips {
+        c.push("spike_y".into());
+        c.push("bubble_y".into());
+    }
     for p in &case.probes.pressure {
         c.extend(super::case_file::pressure_columns(p));
     }
@@ -141,6 +145,10 @@ fn sample(case: &CaseFile, sim: &mut Simulation<2>, s: &Sampler) -> Vec<f64> {
         let f = diagnostics::front(water, 0, sim.cfg.dx);
         row.push(f);
         row.push(f / case.scales.length);
+    }
+    if case.probes.interface_tips {
+        let (spike, bubble) = diagnostics::interface_tips(&sim.fluid, sim.cfg.dx);
+        row.extend([spike, bubble]);
     }
     // The wall sensors, in the order of the case's probes (setup::wall_sensors).
     let mut k = 0;

@@ -38,6 +38,22 @@ pub fn front<const D: usize>(fluid: &Fluid<D>, axis: usize, dx: f64) -> f64 {
     fluid.pos.iter().map(|p| p[axis]).fold(f64::NEG_INFINITY, f64::max) + 0.5 * dx
 }
 
+/// The tips of the interface between phase 0 (heavy, above) and phase 1 (light, below) along the last axis: the
+/// lowest particle of phase 0 minus dx/2 (the spike) and the highest of phase 1 plus dx/2 (the bubble); NaN for
+/// a phase with no particle.
+pub fn interface_tips<const D: usize>(fluid: &Fluid<D>, dx: f64) -> (f64, f64) {
+    let (mut spike, mut bubble) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (p, &k) in fluid.pos.iter().zip(&fluid.phase) {
+        match k {
+            0 => spike = spike.min(p[D - 1]),
+            1 => bubble = bubble.max(p[D - 1]),
+            _ => {}
+        }
+    }
+    let or_nan = |v: f64| if v.is_finite() { v } else { f64::NAN };
+    (or_nan(spike - 0.5 * dx), or_nan(bubble + 0.5 * dx))
+}
+
 /// Free-surface elevation at abscissa `x` (axis 0): the highest particle within one particle spacing dx of
 /// it, plus dx/2. `None` if there is no particle there. The window is 2dx wide so that it always holds a
 /// whole column of particles: columns drift and tilt as the fluid moves, and a window of width dx caught
@@ -106,6 +122,32 @@ pub fn moments<const D: usize>(fluid: &Fluid<D>) -> (SVector<f64, D>, SVector<f6
 
 #[cfg(test)]
 mod tests {
+    /// Heavy particles (phase 0) down to y 0.4 and light ones (phase 1) up to 1.3, a third phase ignored: the
+    /// tips are 0.4 − dx/2 and 1.3 + dx/2; without a light particle the bubble is NaN.
+    #[test]
+    fn interface_tips_are_the_lowest_heavy_and_highest_light_points() {
+        use crate::sph::particles::Fluid;
+        let dx = 0.1;
+        let mut f = Fluid::<2>::default();
+        for (y, k) in [(0.4, 0u8), (1.5, 0), (1.3, 1), (0.1, 1), (2.0, 2), (-1.0, 2)] {
+            f.push(
+                nalgebra::Vector2::new(0.5, y),
+                nalgebra::Vector2::zeros(),
+                1.0,
+                1.0,
+                0.0,
+            );
+            *f.phase.last_mut().unwrap() = k;
+        }
+        let (spike, bubble) = super::interface_tips(&f, dx);
+        assert!(
+            (spike - 0.35).abs() < 1e-12 && (bubble - 1.35).abs() < 1e-12,
+            "{spike} {bubble}"
+        );
+        f.phase.iter_mut().filter(|k| **k == 1).for_each(|k| *k = 0);
+        assert!(super::interface_tips(&f, dx).1.is_nan());
+    }
+
     /// A column of water 10 rows deep on a floor at 0, a drop 5 dx above it, an empty stretch beside it:
     /// the connected gauge reads the column, the plain one the drop, the dry one the floor.
     #[test]
