@@ -79,8 +79,13 @@ pub fn converge(case: &CaseFile, res: &[f64], end_time: Option<f64>) -> anyhow::
         }
         out.wall_seconds.push(result.wall_seconds);
         out.particles.push(result.n_fluid);
-        let cs: Vec<Check> = checks(&result)
-            .ok_or_else(|| anyhow::anyhow!("case `{}` has no validation checks to converge", case.name))?;
+        let mut cs: Vec<Check> = checks(&result).unwrap_or_default();
+        cs.extend(reported_quantities(&result));
+        anyhow::ensure!(
+            !cs.is_empty(),
+            "case `{}` has no validation checks nor reported quantities (`probes.interface_tips`) to converge",
+            case.name
+        );
         // The checks come in the same order at every resolution (their labels may name the reference's
         // own resolution, so they are matched by position).
         if k == 0 {
@@ -104,6 +109,42 @@ pub fn converge(case: &CaseFile, res: &[f64], end_time: Option<f64>) -> anyhow::
     }
     out.quantities.retain(|q| q.values.len() == res.len());
     Ok(out)
+}
+
+/// Quantities a case reports without a reference, converged on their own values (C.2): with
+/// `probes.interface_tips`, `spike_y` and `bubble_y` at every whole t√(g/L) up to the end (linear between series
+/// rows). Their `reference` and `error` are NaN.
+fn reported_quantities(r: &crate::cases::run::RunResult) -> Vec<Check> {
+    let case = &r.case;
+    if !case.probes.interface_tips {
+        return vec![];
+    }
+    let (Some(t), t_scale) = (
+        r.series.column("t"),
+        (case.scales.length / case.gravity_magnitude()).sqrt(),
+    ) else {
+        return vec![];
+    };
+    let mut out = vec![];
+    for column in ["spike_y", "bubble_y"] {
+        let Some(v) = r.series.column(column) else { continue };
+        let mut k = 1.0;
+        while k * t_scale <= t.last().copied().unwrap_or(0.0) + 1e-12 {
+            let at = k * t_scale;
+            let i = t.partition_point(|&ti| ti < at).clamp(1, t.len() - 1);
+            let w = ((at - t[i - 1]) / (t[i] - t[i - 1])).clamp(0.0, 1.0);
+            out.push(Check {
+                case: case.name.clone(),
+                quantity: format!("{column} (m) at t√(g/L) = {k}"),
+                value: v[i - 1] + w * (v[i] - v[i - 1]),
+                reference: f64::NAN,
+                error: f64::NAN,
+                tolerance: None,
+            });
+            k += 1.0;
+        }
+    }
+    out
 }
 
 impl Convergence {
