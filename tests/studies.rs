@@ -708,7 +708,8 @@ fn a_3d_study_tows_the_hull_beside_its_2dt_partner_at_one_spacing() {
     let spec = &study.cases[0];
     let surface =
         bowwave::geometry::surface::HullSurface::new(&bowwave::geometry::hull_file::HullOffsets::read(&hull).unwrap());
-    let mut towed = bowwave::studies::ship3d::towed(&surface, spec.fr(), spec.ship3d.as_ref().unwrap());
+    let mut towed =
+        bowwave::compare3d::towed_ship::TowedShip::with_options(surface, spec.fr(), spec.ship3d.as_ref().unwrap());
     towed.checkpoint = Some(bowwave::compare3d::towed_ship::CheckpointPolicy {
         dir: case.join("ship3d"),
         every: std::time::Duration::MAX,

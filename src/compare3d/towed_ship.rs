@@ -86,23 +86,125 @@ pub struct CheckpointPolicy {
     pub halt_at_step: Option<u64>,
 }
 
+/// The towed run's options as a user sets them: the same struct is `bowwave ship`'s flattened options (each doc
+/// comment its `--help`) and a study's `[ship3d]` table (the same key names, `_` for `-`), so that the two cannot
+/// drift apart. Defaults in [`TowOptions::default`] only.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize, clap::Args)]
+#[serde(default, deny_unknown_fields)]
+pub struct TowOptions {
+    /// Particles over the draft, D/dx (D/dx 5 on the Wigley hull: 89 436 particles, some 15–20 min on 2 idle cores).
+    #[arg(long, default_value_t = t().res)]
+    pub res: f64,
+    /// The hull accelerates from rest to U over this distance, in L (a smooth ramp, zero acceleration at both ends).
+    #[arg(long, default_value_t = t().ramp)]
+    pub ramp: f64,
+    /// The longest distance travelled, in L; the run stops earlier once the bow crest is steady.
+    #[arg(long, default_value_t = t().travel)]
+    pub travel: f64,
+    /// The shortest distance travelled, in L, before the run may stop: the pattern along the whole hull must
+    /// have left the start behind (the stern passes the stem's starting point after 1 L).
+    #[arg(long, default_value_t = t().min_travel)]
+    pub min_travel: f64,
+    /// The bow is steady when its crest height moved by less than this, in D, over the last `--steady-over` L.
+    #[arg(long, default_value_t = t().steady_tol)]
+    pub steady_tol: f64,
+    /// The stretch of travel (L) over which the bow crest must stay within `--steady-tol`.
+    #[arg(long, default_value_t = t().steady_over)]
+    pub steady_over: f64,
+    /// The tank's half width from the centre plane, in B (the 2D+t scene's 4 B). The tank is a channel, not open
+    /// water: a wider one lets the divergent waves leave the hull before they reflect from its side (thesis
+    /// appendix D); it must leave at least one row of particles beside the hull.
+    #[arg(long, default_value_t = t().half_width)]
+    pub half_width: f64,
+    /// The water's depth, in D (the 2D+t scene's 2 D); at least one row of particles under the keel.
+    #[arg(long, default_value_t = t().depth)]
+    pub depth: f64,
+}
+
+/// The defaults, for clap's `default_value_t`.
+fn t() -> TowOptions {
+    TowOptions::default()
+}
+
+impl Default for TowOptions {
+    /// D/dx 5; ramp over 0.25 L; at least 1.5 L and at most 2.5 L travelled; steady within 0.02 D over the last
+    /// 0.25 L; the 2D+t scene's tank, half width 4 B and depth 2 D (thesis §10.1.2).
+    fn default() -> Self {
+        TowOptions {
+            res: 5.0,
+            ramp: 0.25,
+            travel: 2.5,
+            min_travel: 1.5,
+            steady_tol: 0.02,
+            steady_over: 0.25,
+            half_width: 4.0,
+            depth: 2.0,
+        }
+    }
+}
+
+impl TowOptions {
+    /// The first option out of range, as (key, expected); the tank's fit around the hull and the memory are
+    /// checked when the scene is planned.
+    pub fn check(&self) -> Option<(&'static str, &'static str)> {
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        if !positive(self.res) {
+            return Some(("res", "particles over the draft D/dx > 0"));
+        }
+        if !positive(self.ramp) {
+            return Some(("ramp", "a distance in L > 0"));
+        }
+        if !(positive(self.min_travel) && self.min_travel > self.ramp) {
+            return Some(("min_travel", "a distance in L beyond the ramp"));
+        }
+        if !(self.travel.is_finite() && self.travel >= self.min_travel) {
+            return Some(("travel", "a distance in L ≥ min_travel"));
+        }
+        if !positive(self.steady_tol) {
+            return Some(("steady_tol", "a height in D > 0"));
+        }
+        if !positive(self.steady_over) {
+            return Some(("steady_over", "a distance in L > 0"));
+        }
+        if !(self.half_width.is_finite() && self.half_width > 0.5) {
+            return Some(("half_width", "a half width in B > 0.5 (beyond the hull)"));
+        }
+        if !(self.depth.is_finite() && self.depth > 1.0) {
+            return Some(("depth", "a depth in D > 1 (below the keel)"));
+        }
+        None
+    }
+}
+
 impl TowedShip {
-    /// The defaults: ramp over 0.25 L, at least 1.5 L and at most 2.5 L travelled, steady within 0.02 D over the last 0.25 L, samples
-    /// every 0.05 L, 0.5 L of water behind the stern.
+    /// The defaults ([`TowOptions::default`]) at D/dx `d_over_dx`; samples every 0.05 L, 0.5 L of water behind
+    /// the stern.
     pub fn new(hull: HullSurface, fr: f64, d_over_dx: f64) -> Self {
+        Self::with_options(
+            hull,
+            fr,
+            &TowOptions {
+                res: d_over_dx,
+                ..TowOptions::default()
+            },
+        )
+    }
+
+    /// A run of `hull` at `fr` with the user's options.
+    pub fn with_options(hull: HullSurface, fr: f64, o: &TowOptions) -> Self {
         TowedShip {
             hull,
             fr,
-            d_over_dx,
-            ramp_over_l: 0.25,
-            min_travel_over_l: 1.5,
-            max_travel_over_l: 2.5,
-            steady_tolerance_over_d: 0.02,
-            steady_over_l: 0.25,
+            d_over_dx: o.res,
+            ramp_over_l: o.ramp,
+            min_travel_over_l: o.min_travel,
+            max_travel_over_l: o.travel,
+            steady_tolerance_over_d: o.steady_tol,
+            steady_over_l: o.steady_over,
             sample_over_l: 0.05,
             behind_over_l: 0.5,
-            half_width_over_b: 4.0,
-            depth_over_d: 2.0,
+            half_width_over_b: o.half_width,
+            depth_over_d: o.depth,
             frames: None,
             checkpoint: None,
         }

@@ -100,7 +100,13 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
             let ship3d = spec
                 .ship3d
                 .as_ref()
-                .map(|ship| crate::compare3d::towed_ship::plan(&super::ship3d::towed(&hull, spec.fr(), ship)))
+                .map(|ship| {
+                    crate::compare3d::towed_ship::plan(&crate::compare3d::towed_ship::TowedShip::with_options(
+                        (*hull).clone(),
+                        spec.fr(),
+                        ship,
+                    ))
+                })
                 .transpose()?;
             Ok(Estimate {
                 spec: spec.clone(),

@@ -43,19 +43,6 @@ pub struct Ship3dRecord {
     pub blow_up: Option<String>,
 }
 
-/// The towed run of a case: `hull` at `fr` with the study's `[ship3d]` options.
-pub fn towed(hull: &HullSurface, fr: f64, ship: &Ship3d) -> TowedShip {
-    let mut t = TowedShip::new(hull.clone(), fr, ship.res);
-    t.ramp_over_l = ship.ramp;
-    t.min_travel_over_l = ship.min_travel;
-    t.max_travel_over_l = ship.travel;
-    t.steady_tolerance_over_d = ship.steady_tol;
-    t.steady_over_l = ship.steady_over;
-    t.half_width_over_b = ship.half_width;
-    t.depth_over_d = ship.depth;
-    t
-}
-
 /// Runs the 3D side of a case whose 2D+t run has written `case_dir/eta.csv`: checkpoints in `case_dir/ship3d/`
 /// every `every` (none with `None`), a stop with the state saved after `wall_limit`, a fresh start with `fresh`
 /// (`--force`); then its tables, maps and `summary.txt` there, and its record.
@@ -73,7 +60,7 @@ pub fn run(
     if fresh {
         let _ = std::fs::remove_file(dir.join(crate::compare3d::towed_checkpoint::FILE));
     }
-    let mut opts = towed(hull, fr, ship);
+    let mut opts = TowedShip::with_options(hull.clone(), fr, ship);
     opts.checkpoint = Some(towed_ship::CheckpointPolicy {
         dir: dir.clone(),
         every: every.unwrap_or(Duration::MAX),

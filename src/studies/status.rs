@@ -45,7 +45,9 @@ pub fn status(study: &Study, out: &Path) -> anyhow::Result<Vec<CaseStatus>> {
                 CaseState::Finished(Box::new(rec))
             } else if let Some(ship) = spec.ship3d.as_ref().filter(|_| ship_checkpoint.exists()) {
                 let hull = case_surface(study, spec, None)?;
-                let fingerprint = super::ship3d::towed(&hull, spec.fr(), ship).fingerprint();
+                let fingerprint =
+                    crate::compare3d::towed_ship::TowedShip::with_options((*hull).clone(), spec.fr(), ship)
+                        .fingerprint();
                 CaseState::Ship3dInProgress(crate::compare3d::towed_checkpoint::peek(
                     &ship_checkpoint,
                     &fingerprint,

@@ -40,90 +40,10 @@ pub struct StudyFile {
     pub ship3d: Option<Ship3d>,
 }
 
-/// The 3D side of a study (`[ship3d]`): every case runs the towed ship of `bowwave ship` and its 2D+t partner at
-/// one spacing dx = D/res, in one tank (half width, depth) and at one sound speed (the 2D+t rule), then compares
-/// the two wave patterns. The keys and defaults are `bowwave ship`'s options of the same names.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Ship3d {
-    /// Particles over the draft, D/dx, of both models (at least 4: the 2D+t scene's bound).
-    pub res: f64,
-    /// Ramp from rest to U over this distance, L (0.25: `bowwave ship`'s).
-    #[serde(default = "Ship3d::default_ramp")]
-    pub ramp: f64,
-    /// Shortest distance travelled, L (1.5: the stern has passed the stem's start by half a length).
-    #[serde(default = "Ship3d::default_min_travel")]
-    pub min_travel: f64,
-    /// Longest distance travelled, L (2.5).
-    #[serde(default = "Ship3d::default_travel")]
-    pub travel: f64,
-    /// The bow is steady when its crest moved by less than this, D, over `steady_over` (0.02).
-    #[serde(default = "Ship3d::default_steady_tol")]
-    pub steady_tol: f64,
-    /// The stretch of travel for the steadiness test, L (0.25).
-    #[serde(default = "Ship3d::default_steady_over")]
-    pub steady_over: f64,
-    /// The tank's half width, in B, of both models (4: thesis §10.1.2).
-    #[serde(default = "Ship3d::default_half_width")]
-    pub half_width: f64,
-    /// The water's depth, in D, of both models (2: thesis §10.1.2).
-    #[serde(default = "Ship3d::default_depth")]
-    pub depth: f64,
-}
-
-impl Ship3d {
-    fn default_ramp() -> f64 {
-        0.25
-    }
-    fn default_min_travel() -> f64 {
-        1.5
-    }
-    fn default_travel() -> f64 {
-        2.5
-    }
-    fn default_steady_tol() -> f64 {
-        0.02
-    }
-    fn default_steady_over() -> f64 {
-        0.25
-    }
-    fn default_half_width() -> f64 {
-        4.0
-    }
-    fn default_depth() -> f64 {
-        2.0
-    }
-
-    /// The first field out of range, as (key, expected).
-    fn check(&self) -> Option<(&'static str, &'static str)> {
-        let positive = |x: f64| x.is_finite() && x > 0.0;
-        if !(self.res.is_finite() && self.res >= 4.0) {
-            return Some(("res", "D/dx ≥ 4 (the 2D+t partner needs 4 particles over the draft)"));
-        }
-        if !positive(self.ramp) {
-            return Some(("ramp", "a distance in L > 0"));
-        }
-        if !(positive(self.min_travel) && self.min_travel > self.ramp) {
-            return Some(("min_travel", "a distance in L beyond the ramp"));
-        }
-        if !(self.travel.is_finite() && self.travel >= self.min_travel) {
-            return Some(("travel", "a distance in L ≥ min_travel"));
-        }
-        if !positive(self.steady_tol) {
-            return Some(("steady_tol", "a height in D > 0"));
-        }
-        if !positive(self.steady_over) {
-            return Some(("steady_over", "a distance in L > 0"));
-        }
-        if !(self.half_width.is_finite() && self.half_width > 0.5) {
-            return Some(("half_width", "a half width in B > 0.5 (beyond the hull)"));
-        }
-        if !(self.depth.is_finite() && self.depth > 1.0) {
-            return Some(("depth", "a depth in D > 1 (below the keel)"));
-        }
-        None
-    }
-}
+/// A study's `[ship3d]` table: `bowwave ship`'s options (the same struct, so the two cannot drift apart); every
+/// case runs the towed ship and its 2D+t partner at one spacing dx = D/res, in one tank (half width, depth) and at
+/// one sound speed (the 2D+t rule). A study also needs `res ≥ 4`, the 2D+t partner's bound.
+pub type Ship3d = crate::compare3d::towed_ship::TowOptions;
 
 /// How dx_f/L is chosen: exactly one of `dx` (one value per Froude number), `rule = "auto"` (H_pj/dx > 20,
 /// eq. 10.9, with H_pj estimated from Table 10.1) or `level`.
@@ -302,6 +222,12 @@ fn resolve(s: &StudyFile, draft: f64) -> Result<Vec<CaseSpec>, (String, String)>
         }
         if let Some((key, expected)) = ship.check() {
             return Err((format!("ship3d.{key}"), expected.to_string()));
+        }
+        if ship.res < 4.0 {
+            return err(
+                "ship3d.res",
+                "D/dx ≥ 4 (the 2D+t partner needs 4 particles over the draft)",
+            );
         }
     } else if given != 1 {
         return err(

@@ -1,7 +1,7 @@
 //! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
 
 use crate::options::{halted, minutes, BLEW_UP};
-use bowwave::compare3d::towed_ship::{self, CheckpointPolicy, TowedShip};
+use bowwave::compare3d::towed_ship::{self, CheckpointPolicy, TowOptions, TowedShip};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::io::atomic::write_atomic;
@@ -18,33 +18,8 @@ pub struct ShipArgs {
     /// Froude number U/√(gL).
     #[arg(long, default_value_t = 0.5)]
     pub fr: f64,
-    /// Particles over the draft, D/dx (D/dx 5 on the Wigley hull: 89 436 particles, some 15–20 min on 2 idle cores).
-    #[arg(long, default_value_t = 5.0)]
-    pub res: f64,
-    /// The hull accelerates from rest to U over this distance, in L (a smooth ramp, zero acceleration at both ends).
-    #[arg(long, default_value_t = 0.25)]
-    pub ramp: f64,
-    /// The longest distance travelled, in L; the run stops earlier once the bow crest is steady.
-    #[arg(long, default_value_t = 2.5)]
-    pub travel: f64,
-    /// The shortest distance travelled, in L, before the run may stop: the pattern along the whole hull must
-    /// have left the start behind (the stern passes the stem's starting point after 1 L).
-    #[arg(long, default_value_t = 1.5)]
-    pub min_travel: f64,
-    /// The bow is steady when its crest height moved by less than this, in D, over the last `--steady-over` L.
-    #[arg(long, default_value_t = 0.02)]
-    pub steady_tol: f64,
-    /// The stretch of travel (L) over which the bow crest must stay within `--steady-tol`.
-    #[arg(long, default_value_t = 0.25)]
-    pub steady_over: f64,
-    /// The tank's half width from the centre plane, in B (the 2D+t scene's 4 B). The tank is a channel, not open
-    /// water: a wider one lets the divergent waves leave the hull before they reflect from its side (thesis
-    /// appendix D); it must leave at least one row of particles beside the hull.
-    #[arg(long, default_value_t = 4.0)]
-    pub half_width: f64,
-    /// The water's depth, in D (the 2D+t scene's 2 D); at least one row of particles under the keel.
-    #[arg(long, default_value_t = 2.0)]
-    pub depth: f64,
+    #[command(flatten)]
+    pub tow: TowOptions,
     /// Write ParaView frames every this many L travelled (OUT/vtk: fluid_NNNN.vtp with velocity, pressure and
     /// density, hull_NNNN.vtp the hull's surface, indexed by fluid.pvd and hull.pvd; Earth frame, the hull moving
     /// along −x). 0: none.
@@ -82,14 +57,10 @@ impl ShipArgs {
         let hull = HullSurface::new(&offsets);
         // The 2D+t map first: a wrong folder fails before an hour of 3D.
         let twodt = self.twodt.as_deref().map(towed_ship::read_twodt_eta).transpose()?;
-        let mut opts = TowedShip::new(hull.clone(), self.fr, self.res);
-        opts.ramp_over_l = self.ramp;
-        opts.max_travel_over_l = self.travel;
-        opts.min_travel_over_l = self.min_travel;
-        opts.steady_tolerance_over_d = self.steady_tol;
-        opts.steady_over_l = self.steady_over;
-        opts.half_width_over_b = self.half_width;
-        opts.depth_over_d = self.depth;
+        if let Some((key, expected)) = self.tow.check() {
+            anyhow::bail!("--{}: expected {expected}", key.replace('_', "-"));
+        }
+        let mut opts = TowedShip::with_options(hull.clone(), self.fr, &self.tow);
         anyhow::ensure!(
             self.vtk_every.is_finite() && self.vtk_every >= 0.0,
             "--vtk-every: expected a distance in L ≥ 0 (0: no frames), got {}",
@@ -103,23 +74,23 @@ impl ShipArgs {
                 "{name}, Fr {}, D/dx {}: {} particles, {} hull ghosts, about {:.2} GiB, c0 {:.2} √(gL); {:.0} steps to {} L \
                  travelled (about {:.1} h), {:.0} to {} L ({:.1} h), at {rate:.2e} particle-steps/s (2 threads, measured)",
                 self.fr,
-                self.res,
+                self.tow.res,
                 p.particles,
                 p.hull_ghosts,
                 p.particles as f64 * bowwave::compare3d::ship::BYTES_PER_PARTICLE / 1024f64.powi(3),
                 p.c0_over_sqrt_gl,
                 p.steps_min,
-                self.min_travel,
+                self.tow.min_travel,
                 hours(p.steps_min),
                 p.steps_max,
-                self.travel,
+                self.tow.travel,
                 hours(p.steps_max)
             );
             return Ok(ExitCode::SUCCESS);
         }
         let out = self
             .out
-            .unwrap_or_else(|| PathBuf::from(format!("out/ship-{name}-fr{}-res{}", self.fr, self.res)));
+            .unwrap_or_else(|| PathBuf::from(format!("out/ship-{name}-fr{}-res{}", self.fr, self.tow.res)));
         std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
         if self.vtk_every > 0.0 {
             let dir = out.join("vtk");
