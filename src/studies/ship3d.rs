@@ -24,7 +24,7 @@ pub struct Ship3dRecord {
     pub particles: usize,
     pub hull_ghosts: usize,
     pub steps: u64,
-    /// Wall time of the 3D run (this session's share if it was resumed), s.
+    /// Wall time of the 3D run, s, over every session of a resumed run.
     pub wall_seconds: f64,
     /// Distance travelled at the end, L.
     pub travel_over_l: f64,
