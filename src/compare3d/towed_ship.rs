@@ -235,6 +235,24 @@ pub struct TowedResult {
 /// The bow region where the crest is watched (x/L from the stem).
 pub const BOW_REGION: (f64, f64) = (-0.05, 0.5);
 
+/// The highest η/D of a map over [`BOW_REGION`], and its x/L (the first column holding it); `None` if the region
+/// holds no value. The bow crest of both models.
+pub fn highest_in_bow_region(f: &Field) -> Option<(f64, f64)> {
+    let mut best: Option<(f64, f64)> = None;
+    for (i, col) in f.values.iter().enumerate() {
+        let x = f.x0 + i as f64 * f.dx;
+        if x < BOW_REGION.0 || x > BOW_REGION.1 {
+            continue;
+        }
+        for v in col.iter().filter(|v| v.is_finite()) {
+            if best.is_none_or(|b| *v > b.0) {
+                best = Some((*v, x));
+            }
+        }
+    }
+    best
+}
+
 impl TowedShip {
     /// What identifies the configuration (a checkpoint of another one is not resumed).
     pub fn fingerprint(&self) -> String {
@@ -481,19 +499,7 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
         let mut st = state.borrow_mut();
         if s >= st.next_sample {
             st.next_sample += every;
-            let f = map(sim);
-            let mut crest = (f64::NEG_INFINITY, f64::NAN);
-            for (i, col) in f.values.iter().enumerate() {
-                let x = f.x0 + i as f64 * f.dx;
-                if x < BOW_REGION.0 || x > BOW_REGION.1 {
-                    continue;
-                }
-                for v in col.iter().filter(|v| v.is_finite()) {
-                    if *v > crest.0 {
-                        crest = (*v, x);
-                    }
-                }
-            }
+            let crest = highest_in_bow_region(&map(sim)).unwrap_or((f64::NEG_INFINITY, f64::NAN));
             st.bow.push((s, crest.0, crest.1));
             // Steady: the crest within `tol` of its value `window` L of travel ago, after the ramp.
             let back = st.bow.iter().rev().find(|b| b.0 <= s - window + 1e-9);
@@ -918,5 +924,24 @@ mod tests {
         // Nothing agrees: no band.
         let far = field(|_, _| 1.0, -0.2, 0.01, 121, 50);
         assert!(compare(&a, &far, 0.5, 1.0).bands.is_empty());
+    }
+
+    /// The crest is looked for over the bow region only: a higher value aft of it is not the bow's.
+    #[test]
+    fn the_twodt_crest_is_the_highest_value_in_the_bow_region_only() {
+        let f = Field {
+            x0: -0.05,
+            dx: 0.1,
+            y0: 0.0,
+            dy: 0.1,
+            values: (0..10)
+                .map(|i| {
+                    let x = -0.05 + i as f64 * 0.1;
+                    vec![f64::NAN, if x > 0.5 { 2.0 } else { x }]
+                })
+                .collect(),
+        };
+        let (h, x) = highest_in_bow_region(&f).unwrap();
+        assert!((h - 0.45).abs() < 1e-12 && (x - 0.45).abs() < 1e-12, "{h} at {x}");
     }
 }

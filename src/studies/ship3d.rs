@@ -4,11 +4,10 @@
 //! keep of it.
 
 use super::study_file::Ship3d;
-use crate::compare3d::towed_ship::{self, TowedShip, BOW_REGION};
+use crate::compare3d::towed_ship::{self, TowedShip};
 use crate::driver::Ended;
 use crate::geometry::surface::HullSurface;
 use crate::io::atomic::write_atomic;
-use crate::io::plot::Field;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 use std::time::Duration;
@@ -81,7 +80,7 @@ pub fn run(
     towed_ship::plots(&r, Some((&two, &c)), &dir)?;
     write_atomic(&dir.join("summary.txt"), towed_ship::summary(&r, Some(&c)).as_bytes())?;
     let crest = r.bow.last();
-    let two_crest = highest_in_bow_region(&two);
+    let two_crest = towed_ship::highest_in_bow_region(&two);
     Ok(Ended::Ran(Ship3dRecord {
         dx_over_l: r.dx_over_l,
         c0_over_sqrt_gl: r.c0_over_sqrt_gl,
@@ -98,45 +97,4 @@ pub fn run(
         agreement: c.bands,
         blow_up: r.blow_up.map(|b| b.to_string()),
     }))
-}
-
-/// The highest η/D of a map over [`BOW_REGION`], and its x/L (the first column holding it).
-pub fn highest_in_bow_region(f: &Field) -> Option<(f64, f64)> {
-    let mut best: Option<(f64, f64)> = None;
-    for (i, col) in f.values.iter().enumerate() {
-        let x = f.x0 + i as f64 * f.dx;
-        if x < BOW_REGION.0 || x > BOW_REGION.1 {
-            continue;
-        }
-        for v in col.iter().filter(|v| v.is_finite()) {
-            if best.is_none_or(|b| *v > b.0) {
-                best = Some((*v, x));
-            }
-        }
-    }
-    best
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The crest is looked for over the bow region only: a higher value aft of it is not the bow's.
-    #[test]
-    fn the_twodt_crest_is_the_highest_value_in_the_bow_region_only() {
-        let f = Field {
-            x0: -0.05,
-            dx: 0.1,
-            y0: 0.0,
-            dy: 0.1,
-            values: (0..10)
-                .map(|i| {
-                    let x = -0.05 + i as f64 * 0.1;
-                    vec![f64::NAN, if x > 0.5 { 2.0 } else { x }]
-                })
-                .collect(),
-        };
-        let (h, x) = highest_in_bow_region(&f).unwrap();
-        assert!((h - 0.45).abs() < 1e-12 && (x - 0.45).abs() < 1e-12, "{h} at {x}");
-    }
 }
