@@ -336,7 +336,7 @@ fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
     );
     assert!(c.circulation < 0.0, "circulation {}", c.circulation);
     // The same run's reported pressure checks, among them P1's rise against Marrone, P1's centre against
-    // TrixiParticles and P1/P2 at Greco's placement, are computed (they carry no tolerance: docs/reference/method.md,
+    // TrixiParticles, P1/P2 at Greco's placement and the corner's first impact (P0), are computed (they carry no tolerance: docs/reference/method.md,
     // checks 12–14 and "Two checks for the owner to decide").
     let checks = validation::dam_break(&r);
     validation::print_checks(&checks);
@@ -346,6 +346,7 @@ fn dam_break_plunging_wave_closes_its_cavity_when_the_thesis_says() {
         "P1c mean p* over t*",
         "P1g (Greco's placement) first impact",
         "P2g (Greco's placement) mean",
+        "P0 (90 mm, bottom of the right wall) first impact",
     ] {
         let c = checks
             .iter()
