@@ -117,6 +117,54 @@ fn crest(dir: &Path) -> Option<(f64, f64)> {
         .max_by(|a, b| a.0.total_cmp(&b.0))
 }
 
+/// Fills the highest crest of the rows whose `eta.csv` is gone (a study gathered again from its committed case
+/// files, which keep no η map) from an earlier `sensitivity.csv` of the same study, matched by case number,
+/// parameter and value. Returns the cases filled, for `band.md` to name. A missing or unreadable earlier table
+/// fills nothing.
+pub fn crest_from_earlier(rows: &mut [Row], earlier: &Path) -> Vec<usize> {
+    let Ok(mut reader) = csv::Reader::from_path(earlier) else {
+        return vec![];
+    };
+    let Ok(header) = reader.headers().cloned() else {
+        return vec![];
+    };
+    let at = |name: &str| header.iter().position(|h| h == name);
+    let (Some(c_case), Some(c_par), Some(c_val), Some(c_crest), Some(c_x)) = (
+        at("case"),
+        at("parameter"),
+        at("value"),
+        at("crest_max_over_d"),
+        at("x_crest_max_over_l"),
+    ) else {
+        return vec![];
+    };
+    let mut filled = vec![];
+    for rec in reader.records().map_while(Result::ok) {
+        let num = |c: usize| rec.get(c).and_then(|v| v.trim().parse::<f64>().ok());
+        let (Some(case), Some(crest), Some(x)) = (num(c_case), num(c_crest), num(c_x)) else {
+            continue;
+        };
+        let parameter = rec.get(c_par).unwrap_or("");
+        for r in rows.iter_mut().filter(|r| r.crest.is_none() && r.case as f64 == case) {
+            let same_parameter = parameter
+                == if r.parameter.is_empty() {
+                    "approximation"
+                } else {
+                    &r.parameter
+                };
+            let same_value = match num(c_val) {
+                Some(v) => v == r.value,
+                None => !r.value.is_finite(),
+            };
+            if same_parameter && same_value {
+                r.crest = Some((crest, x));
+                filled.push(r.case);
+            }
+        }
+    }
+    filled
+}
+
 fn row(r: &CaseRecord, dir: &Path) -> anyhow::Result<Row> {
     let (parameter, value, baseline_value) = match &r.spec.hull {
         CaseHull::File(_) => (String::new(), f64::NAN, f64::NAN),
@@ -279,7 +327,7 @@ fn format_value(v: f64) -> String {
 }
 
 /// Writes `sensitivity.csv`, `band.md` and a tornado PNG per metric into `dir`; returns the files written.
-pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row]) -> anyhow::Result<Vec<PathBuf>> {
+pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row], crest_carried: &[usize]) -> anyhow::Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir)?;
     let mut files = vec![];
     let csv = dir.join("sensitivity.csv");
@@ -345,6 +393,15 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row]) -> anyhow::Result<Ve
         files.push(png);
     }
     md.push_str(&notes);
+    if !crest_carried.is_empty() {
+        let cases: Vec<String> = crest_carried.iter().map(|c| c.to_string()).collect();
+        let _ = write!(
+            md,
+            "\nThe highest crest of case(s) {} is carried from this folder's earlier `sensitivity.csv`: their `eta.csv`, \
+             from which it is read, was not kept with the committed case files.\n",
+            cases.join(", ")
+        );
+    }
     let p = dir.join("band.md");
     write_atomic(&p, md.as_bytes())?;
     files.push(p);
@@ -412,5 +469,39 @@ mod tests {
             "{csv}"
         );
         assert!(csv.lines().nth(5).unwrap().starts_with("5,trim,1.5,0,false,,"), "{csv}");
+    }
+
+    /// A gather from committed case files (no `eta.csv`) takes each case's highest crest from the earlier table
+    /// of the same study, matched by case, parameter and value; a row that has its own crest keeps it, and a
+    /// row whose value changed since is not filled.
+    #[test]
+    fn crest_is_carried_from_the_earlier_table_only_for_the_same_case() {
+        let dir = std::env::temp_dir().join(format!("bowwave-crest-carry-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let earlier = dir.join("sensitivity.csv");
+        let mut old = vec![
+            row(1, "", f64::NAN, f64::NAN, Some(0.31)),
+            row(2, "trim", 1.5, 0.0, Some(0.2)),
+        ];
+        old.push(row(3, "trim", 1.0, 0.0, Some(0.22)));
+        old[0].crest = Some((0.9, 0.15));
+        old[1].crest = Some((0.48, 0.145));
+        old[2].crest = Some((0.63, 0.145));
+        std::fs::write(&earlier, table(&old)).unwrap();
+        let mut now = vec![
+            row(1, "", f64::NAN, f64::NAN, Some(0.31)),
+            row(2, "trim", 1.5, 0.0, Some(0.2)),
+        ];
+        now.push(row(3, "trim", 0.5, 0.0, Some(0.3)));
+        now.push(row(4, "flare_angle", 20.0, 10.0, Some(0.33)));
+        now[3].crest = Some((0.97, 0.16));
+        let filled = crest_from_earlier(&mut now, &earlier);
+        assert_eq!(filled, vec![1, 2]);
+        assert_eq!(now[0].crest, Some((0.9, 0.15)));
+        assert_eq!(now[1].crest, Some((0.48, 0.145)));
+        assert_eq!(now[2].crest, None);
+        assert_eq!(now[3].crest, Some((0.97, 0.16)));
+        assert!(crest_from_earlier(&mut now, &dir.join("missing.csv")).is_empty());
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

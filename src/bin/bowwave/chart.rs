@@ -141,7 +141,9 @@ impl ChartKind {
                 let st = bowwave::studies::study_file::Study::read(&study)?;
                 let from = from.unwrap_or_else(|| PathBuf::from("out").join(format!("study-{}", st.spec.name)));
                 let out = out.unwrap_or_else(|| from.clone());
-                let rows = sensitivity::rows(&st, &from)?;
+                let mut rows = sensitivity::rows(&st, &from)?;
+                // Read before `write` replaces it: the crests of cases whose η map was not kept.
+                let carried = sensitivity::crest_from_earlier(&mut rows, &out.join("sensitivity.csv"));
                 let frs: Vec<f64> = st.cases.iter().map(|c| c.fr()).collect();
                 anyhow::ensure!(
                     frs.windows(2).all(|w| w[0] == w[1]),
@@ -152,7 +154,7 @@ impl ChartKind {
                     .meta
                     .name;
                 print!("{}", sensitivity::table(&rows));
-                for f in sensitivity::write(&out, &hull, frs[0], &rows)? {
+                for f in sensitivity::write(&out, &hull, frs[0], &rows, &carried)? {
                     println!("wrote {}", f.display());
                 }
             }
