@@ -34,6 +34,17 @@ pub struct Row {
     pub cpu_seconds: f64,
 }
 
+impl Row {
+    /// The parameter as `sensitivity.csv` names it: `approximation` for the study's own hull.
+    pub fn parameter_label(&self) -> &str {
+        if self.parameter.is_empty() {
+            "approximation"
+        } else {
+            &self.parameter
+        }
+    }
+}
+
 /// A metric of a case, with its name in the table and its label on a chart.
 pub struct Metric {
     pub key: &'static str,
@@ -146,12 +157,7 @@ pub fn crest_from_earlier(rows: &mut [Row], earlier: &Path) -> Vec<usize> {
         };
         let parameter = rec.get(c_par).unwrap_or("");
         for r in rows.iter_mut().filter(|r| r.crest.is_none() && r.case as f64 == case) {
-            let same_parameter = parameter
-                == if r.parameter.is_empty() {
-                    "approximation"
-                } else {
-                    &r.parameter
-                };
+            let same_parameter = parameter == r.parameter_label();
             let same_value = match num(c_val) {
                 Some(v) => v == r.value,
                 None => !r.value.is_finite(),
@@ -208,11 +214,7 @@ pub fn table(rows: &[Row]) -> String {
             s,
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.1},{:.1}",
             r.case,
-            if r.parameter.is_empty() {
-                "approximation"
-            } else {
-                &r.parameter
-            },
+            r.parameter_label(),
             if r.value.is_finite() {
                 r.value.to_string()
             } else {
