@@ -1,6 +1,7 @@
 //! Hull geometry: offsets files, their validation, generators, the spline surface and its sections.
 //! Knows nothing of SPH.
 
+pub mod bent_wall;
 pub mod drawings;
 pub mod hull_file;
 pub mod hull_solid;

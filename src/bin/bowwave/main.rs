@@ -3,6 +3,7 @@
 //! that hand them to the library.
 
 mod bench;
+mod bent_wall;
 mod case;
 mod chart;
 mod converge;
@@ -65,6 +66,11 @@ enum Command {
     /// PNG map), the bow's history (bow.csv), and with `--twodt` the 2D+t map beside it, their difference and
     /// the stretches of x/L over which they agree within 0.1 D (agreement.csv).
     Ship(ship::ShipArgs),
+    /// The bent-wall channel of thesis §10.2.1 in 2D+t: the cut of its ruled surface (eq. 10.8), a plate whose
+    /// foot slides along the floor at U/4 while it turns from vertical to 45° over the water, pushes water of
+    /// depth H towards a straight side wall; records the run-up and the crest, and the plunge (the first
+    /// closed air cavity); writes bent_wall.csv, bent_wall.json, a PNG and ParaView frames.
+    BentWall(bent_wall::BentWallArgs),
     /// Hull geometry: check a hull file, import one from STL, generate the Athena or Alliance approximation,
     /// draw a hull, or write the Wigley hull.
     Hull {
@@ -111,6 +117,7 @@ fn run() -> anyhow::Result<ExitCode> {
         Command::Bench(a) => done(a.run()),
         Command::Slab(a) => done(a.run()),
         Command::Ship(a) => a.run(),
+        Command::BentWall(a) => a.run(),
         Command::Hull { action } => done(action.run()),
         Command::BenchOne(a) => done(a.run()),
         Command::Cases(a) => done(a.run()),
