@@ -225,6 +225,18 @@ pub struct BentWallResult {
     pub stopped: Option<String>,
     /// The crate's git commit (BOWWAVE_GIT_COMMIT at build time), for the record.
     pub commit: String,
+    /// The particles (y, z), their pressure / (ρ0 g H) and the wall polyline at the plunge (for the picture;
+    /// not written to the JSON).
+    #[serde(skip)]
+    pub plunge_snapshot: Option<PlungeSnapshot>,
+}
+
+/// The scene at the plunge, for [`write_outputs`]'s picture.
+#[derive(Clone, Debug, Default)]
+pub struct PlungeSnapshot {
+    pub points: Vec<(f64, f64)>,
+    pub pressure: Vec<f64>,
+    pub wall: Vec<(f64, f64)>,
 }
 
 /// The water's top (highest particle + dx/2) above the calm level within 1.5 dx of the plate (above the foot),
@@ -261,6 +273,7 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
     let mass: f64 = sim.fluid.mass.iter().sum();
     let mut samples: Vec<Sample> = vec![];
     let mut plunge: Option<Plunge> = None;
+    let mut plunge_snapshot: Option<PlungeSnapshot> = None;
     let mut watch = CavityWatch::default();
     let mut pvd: Vec<(f64, String)> = vec![];
     let mut k = 0usize;
@@ -292,6 +305,11 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
                 let walls = vec![profile(&wall, opts.fr_h, width, sim.time).points];
                 if let Some(c) = watch.check(sim, dx, &walls) {
                     plunge = Some(to_plunge(&c, opts, &samples));
+                    plunge_snapshot = Some(PlungeSnapshot {
+                        points: sim.fluid.pos.iter().map(|p| (p.x, p.y)).collect(),
+                        pressure: sim.pressure().to_vec(),
+                        wall: walls[0].iter().map(|p| (p.x, p.y)).collect(),
+                    });
                 }
             }
             k += 1;
@@ -320,6 +338,7 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
         plunge,
         stopped,
         commit: option_env!("BOWWAVE_GIT_COMMIT").unwrap_or("unknown").to_string(),
+        plunge_snapshot,
     })
 }
 
@@ -375,7 +394,8 @@ pub fn table(r: &BentWallResult) -> Table {
     t
 }
 
-/// Writes bent_wall.csv, bent_wall.json (options, result, the plunge) and bent_wall_heights.png into `out`.
+/// Writes bent_wall.csv, bent_wall.json (options, result, the plunge), bent_wall_heights.png and, when it
+/// plunged, bent_wall_plunge.png (the particles by pressure and the wall at the closure) into `out`.
 pub fn write_outputs(r: &BentWallResult, out: &Path) -> anyhow::Result<()> {
     let csv = out.join("bent_wall.csv");
     table(r)
