@@ -422,7 +422,25 @@ pub fn write_outputs(r: &BentWallResult, out: &Path) -> anyhow::Result<()> {
             series("run-up on the plate", |s| s.run_up),
             series("crest away from the plate", |s| s.crest),
         ],
-    )
+    )?;
+    if let (Some(p), Some(snap)) = (&r.plunge, &r.plunge_snapshot) {
+        crate::io::plot::scatter_plot(
+            &out.join("bent_wall_plunge.png"),
+            &format!(
+                "Bent wall in 2D+t at the plunge: s = {:.3}, x = {:.2} H (Fr_H {}, L/H {}, H/dx {})",
+                p.s, p.x, r.options.fr_h, r.options.length, r.options.res
+            ),
+            ("y / H", "z / H"),
+            &snap.points,
+            &snap.pressure,
+            (0.0, 1.5),
+            Some("p / (rho0 g H)"),
+            std::slice::from_ref(&snap.wall),
+            (0.0, r.width, 0.0, 3.0),
+            1400,
+        )?;
+    }
+    Ok(())
 }
 
 /// A short summary for the terminal.
