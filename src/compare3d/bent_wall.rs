@@ -436,7 +436,13 @@ pub fn write_outputs(r: &BentWallResult, out: &Path) -> anyhow::Result<()> {
             (0.0, 1.5),
             Some("p / (rho0 g H)"),
             std::slice::from_ref(&snap.wall),
-            (0.0, r.width, 0.0, 3.0),
+            // Up to the wall's top: a wall point outside the range would be drawn clamped to its edge.
+            (
+                0.0,
+                r.width,
+                0.0,
+                snap.wall.iter().map(|p| p.1).fold(SIDE_WALL_TOP, f64::max),
+            ),
             1400,
         )?;
     }
