@@ -235,13 +235,52 @@ pub fn scatter_plot(
                 }),
         )?;
         for w in walls {
-            chart.draw_series(LineSeries::new(w.iter().copied(), BLACK.stroke_width(2)))?;
+            for piece in clip_polyline(w, range) {
+                chart.draw_series(LineSeries::new(piece, BLACK.stroke_width(2)))?;
+            }
         }
         root.present()?;
     }
     let img = encode_png(&buf, width, h)?;
     write_atomic(path, &img)?;
     Ok(())
+}
+
+/// The parts of a polyline inside the window (x0, x1, y0, y1), each segment cut at the window's edges
+/// (Liang–Barsky): plotters draws a point outside the window on its edge, which bends a line that leaves it.
+pub fn clip_polyline(w: &[(f64, f64)], (x0, x1, y0, y1): (f64, f64, f64, f64)) -> Vec<Vec<(f64, f64)>> {
+    let mut pieces: Vec<Vec<(f64, f64)>> = vec![];
+    let mut open = false;
+    for s in w.windows(2) {
+        let (a, b) = (s[0], s[1]);
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        let inside = [(-dx, a.0 - x0), (dx, x1 - a.0), (-dy, a.1 - y0), (dy, y1 - a.1)]
+            .iter()
+            .all(|&(p, q)| {
+                if p == 0.0 {
+                    return q >= 0.0;
+                }
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+                t0 <= t1
+            });
+        if !inside {
+            open = false;
+            continue;
+        }
+        let at = |t: f64| (a.0 + t * dx, a.1 + t * dy);
+        if !(open && t0 == 0.0) {
+            pieces.push(vec![at(t0)]);
+        }
+        pieces.last_mut().expect("a piece").push(at(t1));
+        open = t1 == 1.0;
+    }
+    pieces
 }
 
 /// A vertical colour bar of [vmin, vmax] filling `area`, labelled `label`.
@@ -781,6 +820,29 @@ mod tests {
     fn red_pixels(path: &Path) -> usize {
         let img = image::open(path).unwrap().to_rgb8();
         img.pixels().filter(|p| p.0 == [210, 30, 30]).count()
+    }
+
+    /// A wall leaving a snapshot's window was drawn to its far point clamped onto the window's edge, which bent
+    /// the bent-wall plate's line at the top of its plunge picture: the wall is cut where it leaves the window.
+    #[test]
+    fn a_wall_leaving_the_window_is_cut_at_its_edge_not_bent_onto_it() {
+        let range = (0.0, 10.0, 0.0, 3.0);
+        // The plate from its foot (2.5, 0) to its top (5.45, 3.78) above the window: cut at z = 3.
+        let pieces = clip_polyline(&[(5.45, 3.78), (2.5, 0.0), (10.0, 0.0)], range);
+        assert_eq!(pieces.len(), 1, "{pieces:?}");
+        let p = &pieces[0];
+        assert_eq!(p.len(), 3, "{p:?}");
+        let y_at_3 = 2.5 + (5.45 - 2.5) * 3.0 / 3.78;
+        assert!(
+            (p[0].0 - y_at_3).abs() < 1e-12 && (p[0].1 - 3.0).abs() < 1e-12,
+            "{:?}",
+            p[0]
+        );
+        assert_eq!((p[1], p[2]), ((2.5, 0.0), (10.0, 0.0)));
+        // A polyline that leaves and comes back is two pieces; one wholly outside is none.
+        let pieces = clip_polyline(&[(1.0, 1.0), (1.0, 5.0), (2.0, 5.0), (2.0, 1.0)], range);
+        assert_eq!(pieces, vec![vec![(1.0, 1.0), (1.0, 3.0)], vec![(2.0, 3.0), (2.0, 1.0)]]);
+        assert!(clip_polyline(&[(-1.0, 4.0), (11.0, 4.0)], range).is_empty());
     }
 
     /// Particles outside a snapshot's window were drawn on its edge (a coloured strip along the right side of
