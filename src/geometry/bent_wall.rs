@@ -107,9 +107,97 @@ impl BentWall {
     }
 }
 
+impl BentWall {
+    /// Unit normal of the ruled surface at S(t, u), into the water (+y): ∂S/∂t × ∂S/∂u, ∂S/∂t = (0, (1 − u) √2/2,
+    /// u + (1 − u) √2/2), ∂S/∂u = α(t) − β(t) = (−L, −(√2/2 t + L/4), (1 − √2/2) t).
+    pub fn surface_normal(&self, t: f64, u: f64) -> Vector3<f64> {
+        let st = Vector3::new(0.0, (1.0 - u) * A, u + (1.0 - u) * A);
+        let su = Vector3::new(-self.length, -(A * t + self.length / 4.0), B * t);
+        let n = st.cross(&su).normalize();
+        if n.y < 0.0 {
+            -n
+        } else {
+            n
+        }
+    }
+
+    /// The channel's side as an oriented point cloud (a 3D wall's input), at spacing about `ds` (units of H)
+    /// along x and up the wall, from x = `x_from` to `x_to` and up to `top` above the floor: the straight side
+    /// y = 0 before the bent wall (x < 5), the ruled surface of eq. (10.8) over 5 ≤ x ≤ 5 + L, and its last cut
+    /// carried on beyond (the 45° wall; ours, see [`crate::geometry::bent_wall`]). Normals point into the water.
+    pub fn oriented_points(&self, ds: f64, x_from: f64, x_to: f64, top: f64) -> Vec<super::hull_solid::OrientedPoint> {
+        let nx = (((x_to - x_from) / ds).ceil() as usize).max(1);
+        let mut out = vec![];
+        for i in 0..=nx {
+            let x = x_from + (x_to - x_from) * i as f64 / nx as f64;
+            let s = ((x - X_START) / self.length).clamp(0.0, 1.0);
+            let p = self.plate(s, 0.0);
+            // The cut's length up to `top`, sampled evenly.
+            let len = top / p.theta.cos();
+            let nr = ((len / ds).ceil() as usize).max(1);
+            let straight = !(X_START..=X_START + self.length).contains(&x);
+            // t of eq. (10.8) at height z on this cut: z = t (u + (1 − u) √2/2) with u = 1 − s. The surface is
+            // not developable: its normal turns along the cut, so each point takes its own.
+            let u = 1.0 - s;
+            let per_t = u + (1.0 - u) * A;
+            for k in 0..=nr {
+                let (q, _, _) = p.point(len * k as f64 / nr as f64);
+                let normal = if straight {
+                    let n2 = p.normal();
+                    [0.0, n2.x, n2.y]
+                } else {
+                    let n = self.surface_normal(q.y / per_t, u);
+                    [n.x, n.y, n.z]
+                };
+                out.push(super::hull_solid::OrientedPoint {
+                    pos: [x, q.x, q.y],
+                    normal,
+                });
+            }
+        }
+        out
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The ruled surface's normal is perpendicular to both its tangents and faces the water; its (y, z) part is
+    /// along the cut's normal (cos θ, −sin θ), its x part is what makes the cut move (a wall turning into the
+    /// stream faces upstream: n_x < 0).
+    #[test]
+    fn the_ruled_surface_normal_faces_the_water_and_matches_the_cut() {
+        let w = BentWall { length: 12.0 };
+        for (t, u) in [(0.5, 0.9), (2.0, 0.5), (4.0, 0.1)] {
+            let n = w.surface_normal(t, u);
+            let h = 1e-6;
+            let st = (w.surface_point(t + h, u) - w.surface_point(t - h, u)) / (2.0 * h);
+            let su = (w.surface_point(t, u + h) - w.surface_point(t, u - h)) / (2.0 * h);
+            assert!(n.dot(&st).abs() < 1e-8 && n.dot(&su).abs() < 1e-8, "{n:?}");
+            assert!((n.norm() - 1.0).abs() < 1e-12 && n.y > 0.0 && n.x < 0.0, "{n:?}");
+            let cut = w.plate(1.0 - u, 1.0).normal();
+            let yz = Vector2::new(n.y, n.z).normalize();
+            assert!((yz - cut).norm() < 1e-12, "t {t} u {u}: {yz:?} vs {cut:?}");
+        }
+        // The point cloud covers the straight side, the bent wall and its continuation, normals into the water.
+        let cloud = w.oriented_points(0.25, 0.0, 20.0, 2.0);
+        assert!(cloud.iter().all(|p| p.normal[1] > 0.0));
+        let at = |x: f64| cloud.iter().filter(|p| (p.pos[0] - x).abs() < 1e-9).count();
+        assert!(at(0.0) >= 9 && at(20.0) >= 9);
+        assert!(cloud.iter().filter(|p| p.pos[0] < X_START).all(|p| p.pos[1] == 0.0));
+        // On the bent wall each sample is the surface point of its height, with that point's own normal.
+        for p in cloud
+            .iter()
+            .filter(|p| p.pos[0] > X_START && p.pos[0] < X_START + w.length)
+        {
+            let u = 1.0 - (p.pos[0] - X_START) / w.length;
+            let t = p.pos[2] / (u + (1.0 - u) * A);
+            let (q, n) = (w.surface_point(t, u), w.surface_normal(t, u));
+            assert!((q - Vector3::from(p.pos)).norm() < 1e-12, "{:?} vs {q:?}", p.pos);
+            assert!((n - Vector3::from(p.normal)).norm() < 1e-12);
+        }
+    }
 
     /// The cut of eq. (10.8) at x is the plate: every surface point of that x lies on the line from the foot
     /// along (sin θ, cos θ), and the ends are vertical (s = 0) and 45° (s = 1).
