@@ -108,11 +108,8 @@ impl BentWallOptions {
     }
 }
 
-/// How much faster than the wall the run-up sheet is expected to be (the 2D+t scene's factor,
-/// `docs/decisions/twodt-sound-speed.md`).
-const RUN_UP_SPEED_FACTOR: f64 = crate::twodt::scene::RUN_UP_SPEED_FACTOR;
-
-/// Expected largest water speed / √(gH): the larger of [`RUN_UP_SPEED_FACTOR`] times the fastest point of the
+/// Expected largest water speed / √(gH): the larger of the 2D+t rule's
+/// [`RUN_UP_SPEED_FACTOR`](crate::twodt::scene::RUN_UP_SPEED_FACTOR) times the fastest point of the
 /// plate up to 2 H above the floor over the whole passage, and √(2 g H) (a crest of height H falling back).
 pub fn expected_max_speed(wall: &BentWall, fr_h: f64) -> f64 {
     let mut v = 0.0f64;
@@ -121,7 +118,7 @@ pub fn expected_max_speed(wall: &BentWall, fr_h: f64) -> f64 {
         let r = 2.0 / p.theta.cos();
         v = v.max(p.point(r).1.norm()).max(p.foot_velocity.norm());
     }
-    (RUN_UP_SPEED_FACTOR * v).max(2f64.sqrt())
+    (crate::twodt::scene::RUN_UP_SPEED_FACTOR * v).max(2f64.sqrt())
 }
 
 /// The wall at time t: the plate (the cut of eq. 10.8 for t from 5 down to 0) from its top down to the foot,
