@@ -124,7 +124,7 @@ pub fn expected_max_speed(wall: &BentWall, fr_h: f64) -> f64 {
 /// The wall at time t: the plate (the cut of eq. 10.8 for t from 5 down to 0) from its top down to the foot,
 /// the floor, the side wall.
 pub fn profile(wall: &BentWall, fr_h: f64, width: f64, t: f64) -> Profile {
-    let s = fr_h * t / wall.length;
+    let s = wall.s_at(t, fr_h);
     let p = wall.plate(s, fr_h);
     let top = wall.surface_point(crate::geometry::bent_wall::T_MAX, 1.0 - s.clamp(0.0, 1.0));
     let r_top = (V2::new(top.y, top.z) - p.foot).norm();
@@ -240,7 +240,7 @@ pub struct PlungeSnapshot {
 /// and farther than `far` from it, with the latter's y.
 fn heights(sim: &Simulation<2>, wall: &BentWall, s: f64, fr_h: f64, dx: f64, far: f64) -> (f64, f64, f64) {
     let band = 1.5 * dx;
-    let p = wall.plate(s.clamp(0.0, 1.0), fr_h);
+    let p = wall.plate(s, fr_h);
     let (n, e) = (p.normal(), p.up());
     let (mut run_up, mut crest, mut crest_y) = (f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NAN);
     for x in &sim.fluid.pos {
@@ -273,25 +273,29 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
     let mut plunge_snapshot: Option<PlungeSnapshot> = None;
     let mut watch = CavityWatch::default();
     let mut pvd: Vec<(f64, String)> = vec![];
-    let mut k = 0usize;
+    // Index of the next sample time k·every, and of the next frame's interval. A step longer than the interval
+    // skips the samples it jumps over instead of delaying every later one.
+    let (mut k, mut next_frame) = (0usize, 0usize);
     let clock = Instant::now();
     let mut observer = Watch(|sim: &mut Simulation<2>| {
         if sim.time + 1e-12 >= k as f64 * every {
+            let now = k.max(((sim.time + 1e-12) / every).floor() as usize);
             sim.refresh();
-            let s = opts.fr_h * sim.time / opts.length;
+            let s = wall.s_at(sim.time, opts.fr_h);
             let (run_up, crest, crest_y) = heights(sim, &wall, s, opts.fr_h, dx, 3.0 * h);
             samples.push(Sample {
                 t: sim.time,
                 s,
-                x: crate::geometry::bent_wall::X_START + s * opts.length,
-                theta_deg: wall.plate(s.clamp(0.0, 1.0), opts.fr_h).theta.to_degrees(),
+                x: wall.x_of(s),
+                theta_deg: wall.plate(s, opts.fr_h).theta.to_degrees(),
                 run_up,
                 crest,
                 crest_y,
                 kinetic: sim.energies().kinetic / mass,
             });
             if let Some(dir) = frames_dir {
-                if k.is_multiple_of(frame_every) {
+                if now >= next_frame {
+                    next_frame = (now / frame_every + 1).saturating_mul(frame_every);
                     let name = format!("bent_wall_{:04}.vtp", pvd.len());
                     write_frame(sim, &dir.join(&name))?;
                     pvd.push((sim.time, name));
@@ -301,7 +305,7 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
             if plunge.is_none() && s > 0.02 {
                 let walls = vec![profile(&wall, opts.fr_h, width, sim.time).points];
                 if let Some(c) = watch.check(sim, dx, &walls) {
-                    plunge = Some(to_plunge(&c, opts, &samples));
+                    plunge = Some(to_plunge(&c, &wall, opts.fr_h, &samples));
                     plunge_snapshot = Some(PlungeSnapshot {
                         points: sim.fluid.pos.iter().map(|p| (p.x, p.y)).collect(),
                         pressure: sim.pressure().to_vec(),
@@ -309,14 +313,14 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
                     });
                 }
             }
-            k += 1;
+            k = now + 1;
         }
         let done = sim.time >= t_end || (opts.stop_at_plunge && plunge.is_some());
         Ok(if done { Flow::Stop } else { Flow::Step })
     });
     let mut bar = Progress::new("bent wall ", progress, None, |sim: &Simulation<2>| Status {
         fraction: sim.time / t_end,
-        text: format!("x/L = {:.3}", opts.fr_h * sim.time / opts.length),
+        text: format!("x/L = {:.3}", wall.s_at(sim.time, opts.fr_h)),
         steps: sim.steps,
     });
     let outcome = drive(&mut sim, &mut [&mut observer, &mut bar])?;
@@ -339,13 +343,13 @@ pub fn run(opts: &BentWallOptions, frames_dir: Option<&Path>, progress: bool) ->
     })
 }
 
-fn to_plunge(c: &CavityClosure, opts: &BentWallOptions, samples: &[Sample]) -> Plunge {
-    let s = opts.fr_h * c.time / opts.length;
+fn to_plunge(c: &CavityClosure, wall: &BentWall, fr_h: f64, samples: &[Sample]) -> Plunge {
+    let s = wall.s_at(c.time, fr_h);
     Plunge {
         t: c.time,
         t_before: c.previous_time,
         s,
-        x: crate::geometry::bent_wall::X_START + s * opts.length,
+        x: wall.x_of(s),
         centroid: [c.centroid.x, c.centroid.y],
         area: c.area,
         circulation: c.circulation,

@@ -70,6 +70,16 @@ impl PlateState {
 }
 
 impl BentWall {
+    /// The fraction s of the wall passed at time t for a stream at speed `u` (H per unit time): s = u t / L.
+    pub fn s_at(&self, t: f64, u: f64) -> f64 {
+        u * t / self.length
+    }
+
+    /// x/H along the channel of the cut at fraction s (eq. 10.8: the wall starts at x = 5).
+    pub fn x_of(&self, s: f64) -> f64 {
+        X_START + s * self.length
+    }
+
     /// tan θ(s) of the cut at fraction s of the wall.
     pub fn tan_theta(s: f64) -> f64 {
         A * s / (1.0 - B * s)
