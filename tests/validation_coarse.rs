@@ -502,3 +502,22 @@ fn rayleigh_taylor_tips_agree_within_a_spacing_between_resolutions() {
         "the spike has fallen"
     );
 }
+
+/// Stokes' first problem (`stokes-wall`, depth/dx 20): a layer sliding over a no-slip floor (thesis §7.1.3,
+/// physical viscosity) grows the shear layer U erf(y / 2√(νt)) within 0.03 U (measured 0.017); the same layer
+/// over a free-slip floor keeps U, so the check tells the two conditions apart.
+#[test]
+fn a_layer_sliding_over_a_no_slip_floor_grows_stokes_shear_layer() {
+    let r = run_case("stokes-wall", 20.0, None);
+    let checks = validation::checks(&r).expect("stokes-wall is checked");
+    assert_checks(&checks);
+    let free = run_changed("stokes-wall", 20.0, "free slip", |c| {
+        c.numerics.wall_slip = bowwave::sph::equations::ghost_conditions::WallSlip::FreeSlip;
+    });
+    let profile = &validation::checks(&free).unwrap()[0];
+    assert!(
+        profile.error > 0.5,
+        "a free-slip floor should leave the layer at U: profile error {}",
+        profile.error
+    );
+}

@@ -12,6 +12,7 @@ pub const BUILTIN: &[(&str, &str)] = &[
     ("jet-floor", include_str!("../../cases/jet-floor.toml")),
     ("sloshing-deep", include_str!("../../cases/sloshing-deep.toml")),
     ("sloshing-shallow", include_str!("../../cases/sloshing-shallow.toml")),
+    ("stokes-wall", include_str!("../../cases/stokes-wall.toml")),
     ("two-layer", include_str!("../../cases/two-layer.toml")),
     ("two-phase-drop-2", include_str!("../../cases/two-phase-drop-2.toml")),
     (

@@ -206,6 +206,10 @@ pub struct Numerics {
     /// (`sph::particle_shifting`).
     #[serde(default)]
     pub shifting: crate::sph::particle_shifting::ParticleShifting,
+    /// "free-slip" (the default, the thesis's for impact flows) or "no-slip": every wall holds the fluid in the
+    /// viscous term (thesis §7.1.3), meant with `viscosity = { kind = "physical", nu = … }`.
+    #[serde(default)]
+    pub wall_slip: crate::sph::equations::ghost_conditions::WallSlip,
 }
 
 fn default_kernel_table() -> bool {
@@ -232,6 +236,7 @@ impl Default for Numerics {
             ghost_interpolation: Default::default(),
             kernel_table: true,
             shifting: Default::default(),
+            wall_slip: Default::default(),
         }
     }
 }

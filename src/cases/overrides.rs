@@ -1,6 +1,7 @@
 //! What the command line may change in every case it runs (`bowwave run` and `bowwave validate`).
 
 use super::CaseFile;
+use crate::sph::equations::{ghost_conditions::WallSlip, viscosity::Viscosity};
 use crate::sph::particle_shifting::ParticleShifting;
 use crate::sph::polyline_wall::GhostKind;
 
@@ -11,6 +12,10 @@ pub struct CaseOverrides {
     pub ghosts: Option<GhostKind>,
     /// The particle shifting (`--shifting`).
     pub shifting: Option<ParticleShifting>,
+    /// A physical kinematic viscosity ν (m²/s) in place of the case's viscosity (`--nu`).
+    pub nu: Option<f64>,
+    /// The walls' condition on the tangential velocity (`--wall-slip`).
+    pub wall_slip: Option<WallSlip>,
 }
 
 impl CaseOverrides {
@@ -21,6 +26,12 @@ impl CaseOverrides {
         }
         if let Some(s) = self.shifting {
             case.numerics.shifting = s;
+        }
+        if let Some(nu) = self.nu {
+            case.numerics.viscosity = Viscosity::Physical { nu };
+        }
+        if let Some(w) = self.wall_slip {
+            case.numerics.wall_slip = w;
         }
     }
 }

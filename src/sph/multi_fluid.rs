@@ -217,7 +217,7 @@ pub(super) fn rates<const D: usize>(
                 let rij = st.pos[i] - st.all_pos[j];
                 let r2 = rij.norm_squared();
                 let gw = rij * st.gradient.at(r2);
-                let (u_j, rho_j, p_j, v_j, grad_j, k_j) = if j < nf {
+                let (u_j, rho_j, p_j, v_j, grad_j, k_j, u_visc_j) = if j < nf {
                     (
                         st.vel[j],
                         st.rho[j],
@@ -225,6 +225,7 @@ pub(super) fn rates<const D: usize>(
                         st.volume[j],
                         st.grad_rho[j],
                         st.phase[j],
+                        st.vel[j],
                     )
                 } else {
                     let g = j - nf;
@@ -235,6 +236,8 @@ pub(super) fn rates<const D: usize>(
                         gs.volume[g],
                         gs.grad_rho[g],
                         gs.phase[g],
+                        // Under no slip the viscous term reads the ghost's reversed velocity (§7.1.3).
+                        gs.vel_viscous.get(g).copied().unwrap_or(gs.vel[g]),
                     )
                 };
                 let u_ji = u_j - u_i;
@@ -258,7 +261,7 @@ pub(super) fn rates<const D: usize>(
                 if let Some(visc) =
                     viscosity::pair_coefficient(&cfg.viscosity, D, h, (eos.rho0, eos.c0), rho0_j, k_j == k)
                 {
-                    let pi = viscosity::pi_ij(&u_ji, &rij, r2, h);
+                    let pi = viscosity::pi_ij(&(u_visc_j - u_i), &rij, r2, h);
                     dvel += viscosity::viscous_acceleration(visc, rt_i, pi, &gw, v_j);
                     max_pi = max_pi.max(pi.abs());
                 }

@@ -19,7 +19,8 @@ use super::eos::Eos;
 use super::equations::{
     continuity,
     density_diffusion::{self, DensityDiffusion},
-    ghost_conditions, pressure_force,
+    ghost_conditions::{self, WallSlip},
+    pressure_force,
     renormalization::RenormalizedGradient,
     timestep,
     viscosity::{self, Viscosity},
@@ -72,6 +73,8 @@ pub struct SolverConfig<const D: usize> {
     pub kernel_table: bool,
     /// Particle shifting after each step; default none (the thesis's δ-SPH).
     pub shifting: ParticleShifting,
+    /// Free slip (the default, the thesis's for impact flows) or no slip in the viscous term (§7.1.3).
+    pub wall_slip: WallSlip,
     /// Several phases by the multi-fluid δ-SPH of Hammani et al. ([`super::multi_fluid`]); `None`, the default,
     /// is the single-phase δ-SPH with `eos`, which takes none of that path. With phases, `eos` should be the
     /// first phase's (the free-surface, sensor and energy diagnostics read it).
@@ -115,6 +118,7 @@ impl<const D: usize> SolverConfig<D> {
             ghost_interpolation: GhostInterpolation::Mls,
             kernel_table: true,
             shifting: ParticleShifting::None,
+            wall_slip: WallSlip::FreeSlip,
             multi_fluid: None,
         }
     }
@@ -132,6 +136,9 @@ pub struct GhostState<const D: usize> {
     /// The fluid particle each image ghost mirrors: ghost `n_fixed + k` mirrors `image_source[k]`.
     pub image_source: Vec<usize>,
     pub vel: Vec<SVector<f64, D>>,
+    /// The velocity the viscous term reads under no slip ([`ghost_conditions::no_slip_velocity`]); empty under
+    /// free slip, where it is `vel`.
+    pub vel_viscous: Vec<SVector<f64, D>>,
     pub rho: Vec<f64>,
     pub p: Vec<f64>,
     pub grad_rho: Vec<SVector<f64, D>>,
@@ -143,8 +150,9 @@ pub struct GhostState<const D: usize> {
     pub volume: Vec<f64>,
 }
 
-/// (velocity, density, pressure, density gradient, active volume, phase) assigned to one ghost.
-type GhostValues<const D: usize> = (SVector<f64, D>, f64, f64, SVector<f64, D>, f64, u8);
+/// (velocity, density, pressure, density gradient, active volume, phase, velocity under no slip) assigned to
+/// one ghost.
+type GhostValues<const D: usize> = (SVector<f64, D>, f64, f64, SVector<f64, D>, f64, u8, SVector<f64, D>);
 
 /// Why a run stopped early.
 #[derive(Clone, Debug, PartialEq)]
@@ -482,7 +490,7 @@ impl<const D: usize> Simulation<D> {
                     let wall_vel = geom.wall_vel[g];
                     if nb.is_empty() {
                         // The mirror image of empty space is empty: this ghost takes no part.
-                        return (wall_vel, eos.rho0, 0.0, SVector::zeros(), 0.0, 0);
+                        return (wall_vel, eos.rho0, 0.0, SVector::zeros(), 0.0, 0, wall_vel);
                     }
                     // With several phases the ghost is of the phase of the particle nearest its mirror point (an
                     // image: of its particle's), valued from that phase only.
@@ -528,7 +536,8 @@ impl<const D: usize> Simulation<D> {
                         let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
                         let p =
                             ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
-                        return (u, eos.density(p), p, grad_g, volume[j], ghost_phase);
+                        let u_ns = ghost_conditions::no_slip_velocity(&vel[j], &wall_vel);
+                        return (u, eos.density(p), p, grad_g, volume[j], ghost_phase, u_ns);
                     }
                     let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
                     let u_g = match geom.mirror[g] {
@@ -536,12 +545,17 @@ impl<const D: usize> Simulation<D> {
                         Mirror::Point => ghost_conditions::point_mirror_velocity(&u_i, &wall_vel),
                         Mirror::Axes(mask) => ghost_conditions::axes_mirror_velocity(&u_i, &wall_vel, mask),
                     };
-                    (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g], ghost_phase)
+                    let u_ns = ghost_conditions::no_slip_velocity(&u_i, &wall_vel);
+                    (u_g, eos.density(p_g), p_g, grad_g, geom.volume[g], ghost_phase, u_ns)
                 },
             )
             .collect();
         let gs = &mut self.ghosts;
         gs.vel = values.par_iter().map(|v| v.0).collect();
+        gs.vel_viscous = match self.cfg.wall_slip {
+            WallSlip::FreeSlip => Vec::new(),
+            WallSlip::NoSlip => values.par_iter().map(|v| v.6).collect(),
+        };
         gs.rho = values.par_iter().map(|v| v.1).collect();
         gs.p = values.par_iter().map(|v| v.2).collect();
         gs.grad_rho = values.par_iter().map(|v| v.3).collect();
@@ -649,6 +663,7 @@ impl<const D: usize> Simulation<D> {
         let diff = cfg.delta * eos.c0 * h;
         let kind = cfg.diffusion;
         let body = cfg.body_force;
+        let no_slip = cfg.wall_slip == WallSlip::NoSlip;
 
         // Stage 5: continuity and momentum, eq. (5.1).
         let out: Vec<(f64, SVector<f64, D>, f64)> = (0..nf)
@@ -663,11 +678,12 @@ impl<const D: usize> Simulation<D> {
                     let rij = pos[i] - all_pos[j];
                     let r2 = rij.norm_squared();
                     let gw = rij * gf.at(r2);
-                    let (u_j, rho_j, p_j, v_j, grad_j) = if j < nf {
-                        (vel[j], rho[j], pressure[j], volume[j], grad_rho[j])
+                    let (u_j, rho_j, p_j, v_j, grad_j, u_visc_j) = if j < nf {
+                        (vel[j], rho[j], pressure[j], volume[j], grad_rho[j], vel[j])
                     } else {
                         let g = j - nf;
-                        (gs.vel[g], gs.rho[g], gs.p[g], gs.volume[g], gs.grad_rho[g])
+                        let u_visc = if no_slip { gs.vel_viscous[g] } else { gs.vel[g] };
+                        (gs.vel[g], gs.rho[g], gs.p[g], gs.volume[g], gs.grad_rho[g], u_visc)
                     };
                     let u_ji = u_j - u_i;
                     drho += continuity::velocity_divergence(rho_i, &u_ji, &gw, v_j);
@@ -676,7 +692,7 @@ impl<const D: usize> Simulation<D> {
                         drho += diff * psi.dot(&gw) * v_j;
                     }
                     dvel += pressure_force::pressure_acceleration(p_i, p_j, rho_i, &gw, v_j);
-                    let pi = viscosity::pi_ij(&u_ji, &rij, r2, h);
+                    let pi = viscosity::pi_ij(&(u_visc_j - u_i), &rij, r2, h);
                     dvel += viscosity::viscous_acceleration(visc, rho_i, pi, &gw, v_j);
                     max_pi = max_pi.max(pi.abs());
                 }
@@ -897,6 +913,7 @@ impl<const D: usize> Simulation<D> {
             .cfg
             .viscosity
             .coefficient(D, self.cfg.eos.rho0, kernel.h, self.cfg.eos.c0);
+        let no_slip = self.cfg.wall_slip == WallSlip::NoSlip;
         let per_ghost: Vec<SVector<f64, D>> = (0..gs.geom.len())
             .into_par_iter()
             .map(|g| {
@@ -906,8 +923,8 @@ impl<const D: usize> Simulation<D> {
                     .for_each_below_within(&self.all_pos, &xg, kernel.support, nf, |j, rgj, r| {
                         let rij = -rgj; // r_i − r_g with i the fluid particle
                         let gw = kernel.grad(&rij, r);
-                        let u_ji = gs.vel[g] - fl.vel[j];
-                        let pi = viscosity::pi_ij(&u_ji, &rij, r * r, kernel.h);
+                        let u_g = if no_slip { gs.vel_viscous[g] } else { gs.vel[g] };
+                        let pi = viscosity::pi_ij(&(u_g - fl.vel[j]), &rij, r * r, kernel.h);
                         let v_i = self.volume[j];
                         f += wall_force::pair_force(p[j], gs.p[g], visc * pi, &gw, v_i, gs.volume[g]);
                     });

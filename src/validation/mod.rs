@@ -20,6 +20,7 @@ mod multi_fluid;
 mod plots;
 pub mod references;
 pub mod sloshing;
+mod stokes_wall;
 pub mod tank_3d;
 
 pub use dam_break::{
@@ -32,6 +33,7 @@ pub use jets::{jet_floor, jet_plate, jet_wall, taylor_jet_cp, JET_PLATE_CP_TOLER
 pub use martin_moyce::martin_moyce;
 pub use multi_fluid::{two_layer, two_phase_drop, INTERFACE_GAP_LIMIT, TWO_LAYER_PRESSURE_TOLERANCE};
 pub use plots::plots;
+pub use stokes_wall::{stokes_wall, STOKES_WALL_TOLERANCE};
 
 /// One validated quantity.
 #[derive(Clone, Debug)]
@@ -89,6 +91,7 @@ pub fn full_resolution(case: &str) -> Option<f64> {
         "jet-wall" | "jet-plate" | "jet-floor" => Some(20.0),
         "sloshing-deep" => Some(50.0),
         "sloshing-shallow" => Some(30.0),
+        "stokes-wall" => Some(40.0),
         "two-layer" => Some(20.0),
         "two-phase-drop-2" | "two-phase-drop-100" => Some(40.0),
         TANK_3D => Some(tank_3d::FULL_RESOLUTION),
@@ -151,6 +154,7 @@ fn builtin_checks(r: &RunResult) -> Option<Vec<Check>> {
         "jet-plate" => jet_plate(r),
         "jet-floor" => jet_floor(r),
         "sloshing-deep" | "sloshing-shallow" => sloshing::sloshing(r),
+        "stokes-wall" => stokes_wall(r),
         "two-layer" => two_layer(r, TWO_LAYER_PRESSURE_TOLERANCE, Some(TWO_LAYER_PRESSURE_TOLERANCE)),
         "two-phase-drop-2" | "two-phase-drop-100" => two_phase_drop(r),
         _ => return None,

@@ -2,6 +2,7 @@
 
 use crate::options::GhostsArg;
 use bowwave::cases::overrides::CaseOverrides;
+use bowwave::sph::equations::ghost_conditions::WallSlip;
 use bowwave::sph::particle_shifting::ParticleShifting;
 use bowwave::{cases, validation};
 use clap::Args;
@@ -37,6 +38,16 @@ pub struct RunArgs {
     /// stagnation points and corners; docs/reference/method.md, "Particle shifting").
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
+    /// A physical kinematic viscosity ν in m²/s (eq. 5.3) in place of the case's viscosity; e.g. the dam break
+    /// at the Reynolds number √(gH) H/ν = 1e4 of thesis §9.3 takes 1.456e-4.
+    #[arg(long, value_parser = crate::options::viscosity_nu)]
+    pub nu: Option<f64>,
+    /// What every wall imposes on the tangential velocity, overriding the case file: `free-slip` (the default,
+    /// the thesis's for impact flows) or `no-slip` (the viscous term sees the velocity relative to the wall
+    /// reversed, thesis §7.1.3; use it with `--nu`, since the artificial viscosity's ν is thousands of times
+    /// water's at laboratory scale).
+    #[arg(long)]
+    pub wall_slip: Option<WallSlip>,
     /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
     /// (by default such a rise is diagnosed as an unstable time integration or a non-conservative term).
     #[arg(long)]
@@ -50,6 +61,8 @@ impl RunArgs {
         CaseOverrides {
             ghosts: self.ghosts.map(Into::into),
             shifting: self.shifting,
+            nu: self.nu,
+            wall_slip: self.wall_slip,
         }
         .apply(&mut case);
         let out = self.out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
@@ -85,6 +98,12 @@ pub struct ValidateArgs {
     /// Particle shifting, overriding the case files (see `run --help`).
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
+    /// A physical kinematic viscosity ν (m²/s) in place of the case files' viscosity (see `run --help`).
+    #[arg(long, value_parser = crate::options::viscosity_nu)]
+    pub nu: Option<f64>,
+    /// Free or no slip at every wall, overriding the case files (see `run --help`).
+    #[arg(long)]
+    pub wall_slip: Option<WallSlip>,
 }
 
 impl ValidateArgs {
@@ -97,6 +116,8 @@ impl ValidateArgs {
             &CaseOverrides {
                 ghosts: self.ghosts.map(Into::into),
                 shifting: self.shifting,
+                nu: self.nu,
+                wall_slip: self.wall_slip,
             },
         )?;
         Ok(if ok {

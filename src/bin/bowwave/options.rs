@@ -48,3 +48,13 @@ pub fn halted(h: &bowwave::driver::Halted) -> std::process::ExitCode {
     eprintln!("{h}");
     std::process::ExitCode::from(3)
 }
+
+/// A kinematic viscosity given on the command line (`--nu`): finite and positive, in m²/s.
+pub fn viscosity_nu(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(nu) if nu.is_finite() && nu > 0.0 => Ok(nu),
+        _ => Err(format!(
+            "expected a positive kinematic viscosity in m²/s (e.g. 1.456e-4), got `{s}`"
+        )),
+    }
+}

@@ -7,10 +7,56 @@
 //!   u_G = 2 u_B − u_I;
 //! * on an edge of an axis-aligned 3D box, free slip on both faces: the velocity relative to the wall reversed
 //!   along the two axes the ghost is beyond, kept along the edge;
+//! * no slip (§7.1.3, an option, [`WallSlip::NoSlip`]): in the viscous term only, the velocity relative to the
+//!   wall reversed whole, u_G = 2 u_B − u_I, so that ½(u_G + u_I) = u_B (the anti-symmetric mirroring of Takeda
+//!   et al. 1994 that the thesis uses in §8.2 and §9.3); the continuity equation keeps the free-slip velocity,
+//!   since reversing the tangential component there spoils the velocity divergence near the wall (§7.1.3);
 //! * pressure, Neumann condition (7.4)–(7.5) for a wall in translation (dn/dt = 0):
 //!   p_G = p_I + ρ_I (g − a_B)·(r_G − r_I), which for a still wall is (7.5), p_G = p_I + 2d ρ g·n.
 
 use nalgebra::SVector;
+use serde::{Deserialize, Serialize};
+
+/// What the walls impose on the tangential velocity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum WallSlip {
+    /// Free slip (7.2): the thesis's condition for inviscid impact flows (§9: the boundary layer has a limited
+    /// influence at these Reynolds numbers). The default.
+    #[default]
+    FreeSlip,
+    /// No slip in the viscous term ([`no_slip_velocity`]), free slip in the continuity equation (§7.1.3). Meant
+    /// with a physical viscosity (`Viscosity::Physical`): with the artificial one, whose ν = α h c0 / 8 is
+    /// thousands of times water's at laboratory scale, the boundary layer it makes is that thick.
+    NoSlip,
+}
+
+impl std::str::FromStr for WallSlip {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "free-slip" => Ok(Self::FreeSlip),
+            "no-slip" => Ok(Self::NoSlip),
+            v => Err(format!("expected `free-slip` or `no-slip`, got `{v}`")),
+        }
+    }
+}
+
+impl std::fmt::Display for WallSlip {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::FreeSlip => "free-slip",
+            Self::NoSlip => "no-slip",
+        })
+    }
+}
+
+/// Ghost velocity of the viscous term under no slip (§7.1.3): the velocity relative to the wall reversed,
+/// u_G = 2 u_B − u_I, whatever the side or corner the ghost mirrors.
+#[inline]
+pub fn no_slip_velocity<const D: usize>(u_i: &SVector<f64, D>, u_wall: &SVector<f64, D>) -> SVector<f64, D> {
+    u_wall * 2.0 - u_i
+}
 
 /// Free-slip ghost velocity.
 #[inline]
@@ -55,4 +101,26 @@ pub fn neumann_pressure<const D: usize>(
     r_gi: &SVector<f64, D>,
 ) -> f64 {
     p_i + rho_i * (body - wall_acc).dot(r_gi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    /// Free slip keeps the tangential velocity and makes the pair's mean normal velocity the wall's; no slip makes
+    /// the pair's whole mean velocity the wall's (the wall velocity is where the fluid meets it, §7.1.3).
+    #[test]
+    fn ghost_and_mirror_point_average_to_the_wall_velocity_as_each_condition_says() {
+        let (u_i, u_b) = (Vector2::new(0.7, -0.3), Vector2::new(0.2, 0.1));
+        let n = Vector2::new(0.6, 0.8);
+        let t = Vector2::new(-0.8, 0.6);
+        let free = free_slip_velocity(&u_i, &u_b, &n);
+        assert!(((free + u_i) * 0.5 - u_b).dot(&n).abs() < 1e-15);
+        assert!((free - u_i).dot(&t).abs() < 1e-15);
+        let no_slip = no_slip_velocity(&u_i, &u_b);
+        assert!(((no_slip + u_i) * 0.5 - u_b).norm() < 1e-15);
+        // Both conditions give the same normal velocity: the continuity equation sees no difference.
+        assert!((no_slip - free).dot(&n).abs() < 1e-15);
+    }
 }
