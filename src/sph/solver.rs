@@ -737,7 +737,10 @@ impl<const D: usize> Simulation<D> {
             // The first stage has prepared the state at t0: the sensors read it at no extra search.
             self.read_sensors();
         }
-        let dt = timestep::time_step(self.cfg.cfl, self.kernel.h, k1.max_signal, k1.max_accel);
+        let mut dt = timestep::time_step(self.cfg.cfl, self.kernel.h, k1.max_signal, k1.max_accel);
+        if let Viscosity::Physical { nu } = self.cfg.viscosity {
+            dt = dt.min(timestep::viscous_limit(self.kernel.h, nu));
+        }
         if !dt.is_finite() || dt < self.cfg.dt_floor {
             return Err(self.blow_up(
                 BlowUpReason::TimeStepCollapse {
