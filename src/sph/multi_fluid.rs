@@ -237,7 +237,7 @@ pub(super) fn rates<const D: usize>(
                         gs.grad_rho[g],
                         gs.phase[g],
                         // Under no slip the viscous term reads the ghost's reversed velocity (§7.1.3).
-                        gs.vel_viscous.get(g).copied().unwrap_or(gs.vel[g]),
+                        gs.viscous_velocity(g),
                     )
                 };
                 let u_ji = u_j - u_i;

@@ -150,6 +150,15 @@ pub struct GhostState<const D: usize> {
     pub volume: Vec<f64>,
 }
 
+impl<const D: usize> GhostState<D> {
+    /// The velocity ghost `g` shows the viscous term: its no-slip velocity when the walls hold the fluid, its
+    /// free-slip velocity otherwise (§7.1.3).
+    #[inline]
+    pub fn viscous_velocity(&self, g: usize) -> SVector<f64, D> {
+        self.vel_viscous.get(g).copied().unwrap_or(self.vel[g])
+    }
+}
+
 /// (velocity, density, pressure, density gradient, active volume, phase, velocity under no slip) assigned to
 /// one ghost.
 type GhostValues<const D: usize> = (SVector<f64, D>, f64, f64, SVector<f64, D>, f64, u8, SVector<f64, D>);
@@ -663,7 +672,6 @@ impl<const D: usize> Simulation<D> {
         let diff = cfg.delta * eos.c0 * h;
         let kind = cfg.diffusion;
         let body = cfg.body_force;
-        let no_slip = cfg.wall_slip == WallSlip::NoSlip;
 
         // Stage 5: continuity and momentum, eq. (5.1).
         let out: Vec<(f64, SVector<f64, D>, f64)> = (0..nf)
@@ -682,8 +690,14 @@ impl<const D: usize> Simulation<D> {
                         (vel[j], rho[j], pressure[j], volume[j], grad_rho[j], vel[j])
                     } else {
                         let g = j - nf;
-                        let u_visc = if no_slip { gs.vel_viscous[g] } else { gs.vel[g] };
-                        (gs.vel[g], gs.rho[g], gs.p[g], gs.volume[g], gs.grad_rho[g], u_visc)
+                        (
+                            gs.vel[g],
+                            gs.rho[g],
+                            gs.p[g],
+                            gs.volume[g],
+                            gs.grad_rho[g],
+                            gs.viscous_velocity(g),
+                        )
                     };
                     let u_ji = u_j - u_i;
                     drho += continuity::velocity_divergence(rho_i, &u_ji, &gw, v_j);
@@ -916,7 +930,6 @@ impl<const D: usize> Simulation<D> {
             .cfg
             .viscosity
             .coefficient(D, self.cfg.eos.rho0, kernel.h, self.cfg.eos.c0);
-        let no_slip = self.cfg.wall_slip == WallSlip::NoSlip;
         let per_ghost: Vec<SVector<f64, D>> = (0..gs.geom.len())
             .into_par_iter()
             .map(|g| {
@@ -926,8 +939,7 @@ impl<const D: usize> Simulation<D> {
                     .for_each_below_within(&self.all_pos, &xg, kernel.support, nf, |j, rgj, r| {
                         let rij = -rgj; // r_i − r_g with i the fluid particle
                         let gw = kernel.grad(&rij, r);
-                        let u_g = if no_slip { gs.vel_viscous[g] } else { gs.vel[g] };
-                        let pi = viscosity::pi_ij(&(u_g - fl.vel[j]), &rij, r * r, kernel.h);
+                        let pi = viscosity::pi_ij(&(gs.viscous_velocity(g) - fl.vel[j]), &rij, r * r, kernel.h);
                         let v_i = self.volume[j];
                         f += wall_force::pair_force(p[j], gs.p[g], visc * pi, &gw, v_i, gs.volume[g]);
                     });
