@@ -71,6 +71,12 @@ enum Command {
     /// depth H towards a straight side wall; records the run-up and the crest, and the plunge (the first
     /// closed air cavity); writes bent_wall.csv, bent_wall.json, a PNG and ParaView frames.
     BentWall(bent_wall::BentWallArgs),
+    /// The bent-wall channel of thesis §10.2.1 in 3D: the ruled surface of eq. (10.8) towed from rest to U
+    /// through still water of depth H until every cut of it has seen only the steady wall, beside its 2D+t
+    /// analogue at the same spacing; the crest and the run-up along the wall in both (bent_wall_3d.csv, a PNG),
+    /// the η map in the wall's frame; checkpoints and resumes like `ship`.
+    #[command(name = "bent-wall-3d")]
+    BentWall3d(bent_wall::BentWall3dArgs),
     /// Hull geometry: check a hull file, import one from STL, generate the Athena or Alliance approximation,
     /// draw a hull, or write the Wigley hull.
     Hull {
@@ -118,6 +124,7 @@ fn run() -> anyhow::Result<ExitCode> {
         Command::Slab(a) => done(a.run()),
         Command::Ship(a) => a.run(),
         Command::BentWall(a) => a.run(),
+        Command::BentWall3d(a) => a.run(),
         Command::Hull { action } => done(action.run()),
         Command::BenchOne(a) => done(a.run()),
         Command::Cases(a) => done(a.run()),
