@@ -576,8 +576,8 @@ fn interpolate(samples: &[twodt::Sample], s: f64, f: fn(&twodt::Sample) -> f64) 
     f(a) + (f(b) - f(a)) * w
 }
 
-/// Writes bent_wall_3d.csv (the cuts), bent_wall_3d_history.csv, bent_wall_3d.json, bent_wall_3d_heights.png
-/// and bent_wall_3d_eta.png into `out`.
+/// Writes bent_wall_3d.csv (the cuts), bent_wall_3d_history.csv, bent_wall_3d_eta.csv (the η map in the
+/// wall's frame), bent_wall_3d.json, bent_wall_3d_heights.png and bent_wall_3d_eta.png into `out`.
 pub fn write_outputs(r: &BentWall3dResult, out: &Path) -> anyhow::Result<()> {
     let named = |cols: &[&str]| Table::new(cols.iter().map(|c| c.to_string()).collect());
     let mut t = named(&[
@@ -613,6 +613,15 @@ pub fn write_outputs(r: &BentWall3dResult, out: &Path) -> anyhow::Result<()> {
         h.push(vec![s.0, s.1, s.2]);
     }
     write(&h, "bent_wall_3d_history.csv")?;
+    if let Some(eta) = &r.eta {
+        let mut e = named(&["xi_over_h", "y_over_h", "eta_over_h"]);
+        for (i, col) in eta.values.iter().enumerate() {
+            for (j, v) in col.iter().enumerate().filter(|(_, v)| v.is_finite()) {
+                e.push(vec![eta.x0 + i as f64 * eta.dx, eta.y0 + j as f64 * eta.dy, *v]);
+            }
+        }
+        write(&e, "bent_wall_3d_eta.csv")?;
+    }
     let json = out.join("bent_wall_3d.json");
     write_atomic(&json, serde_json::to_string_pretty(r)?.as_bytes())
         .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", json.display()))?;

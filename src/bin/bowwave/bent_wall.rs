@@ -135,7 +135,7 @@ pub struct BentWall3dArgs {
     #[arg(long)]
     pub wall_limit: Option<f64>,
     /// Output folder for bent_wall_3d.csv (the cuts, 3D beside 2D+t), bent_wall_3d_history.csv,
-    /// bent_wall_3d.json, bent_wall_3d_heights.png and bent_wall_3d_eta.png (default out/bent-wall-3d-frF-resN).
+    /// bent_wall_3d_eta.csv, bent_wall_3d.json, bent_wall_3d_heights.png and bent_wall_3d_eta.png (default out/bent-wall-3d-frF-resN).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Build the scene, print its particles, wall ghosts and the steps and time the run will take, run nothing.
