@@ -199,7 +199,8 @@ pub struct BlowUp {
     pub reason: BlowUpReason,
     pub time: f64,
     pub step: u64,
-    /// (particle id, its position) that triggered the stop, if one did.
+    /// (particle id, its position) that triggered the stop, if one did; for a time-step collapse, the particle of
+    /// the largest acceleration.
     pub particle: Option<(u32, Vec<f64>)>,
 }
 
@@ -756,12 +757,14 @@ impl<const D: usize> Simulation<D> {
             dt = dt.min(timestep::viscous_limit(self.kernel.h, nu));
         }
         if !dt.is_finite() || dt < self.cfg.dt_floor {
+            // Where it happened: the particle of the largest acceleration (the first of equals).
+            let worst = k1.dvel.par_iter().position_first(|a| a.norm() == k1.max_accel);
             return Err(self.blow_up(
                 BlowUpReason::TimeStepCollapse {
                     dt,
                     floor: self.cfg.dt_floor,
                 },
-                None,
+                worst,
             ));
         }
         let axpy = |a: f64, vel_rate: &[SVector<f64, D>], k: &Rates<D>| {
