@@ -142,6 +142,50 @@ fn behind_cut(wall: &BentWall, xi: f64, y: f64, z: f64) -> bool {
     (V2::new(y, z) - p.foot).dot(&p.normal()) < 0.0
 }
 
+/// The lattice nodes under the floor in the wedge beside the wall's foot that neither the wall nor the floor
+/// fills: the wall's ghosts lie behind its plane extended below the floor (y < foot − |z| tan θ in the cut), the
+/// floor's images mirror the water (y > foot + |z| tan θ), and the 2θ between them would leave the water at the
+/// foot a kernel short on that side. Each is valued as a floor ghost, from its mirror point through the floor
+/// (x, y, −z). Earth coordinates at t = 0 over Earth x in `x_range`, on the lattice of origin `lo` and spacing
+/// `dx`; `xi_of` maps Earth x to ξ at t = 0; `ghosted` says which nodes the wall ghosts itself.
+fn floor_corner_ghosts(
+    wall: &BentWall,
+    (lo, dx, support): (V3, f64, f64),
+    xi_of: &dyn Fn(f64) -> f64,
+    ghosted: &dyn Fn(&V3) -> bool,
+    x_range: (f64, f64),
+) -> Vec<(V3, V3)> {
+    let mut out = vec![];
+    let layers = (support / dx).ceil() as i64;
+    let i0 = ((x_range.0 - lo.x) / dx).floor() as i64;
+    let i1 = ((x_range.1 - lo.x) / dx).ceil() as i64;
+    for i in i0..=i1 {
+        let x = lo.x + (i as f64 + 0.5) * dx;
+        let p = wall.plate((xi_of(x) - X_START) / wall.length, 0.0);
+        let tan = p.theta.tan();
+        if tan <= 0.0 {
+            continue;
+        }
+        for k in 1..=layers {
+            let depth = (k as f64 - 0.5) * dx;
+            // y between foot − depth tan θ and foot + depth tan θ, on the lattice.
+            let (y0, y1) = (p.foot.x - depth * tan, p.foot.x + depth * tan);
+            let j0 = ((y0 - lo.y) / dx - 0.5).ceil() as i64;
+            let j1 = ((y1 - lo.y) / dx - 0.5).floor() as i64;
+            for j in j0..=j1 {
+                let y = lo.y + (j as f64 + 0.5) * dx;
+                // The wall's own ghosts (behind its plane extended) or a mirror of the water (the images): not here.
+                let r = V3::new(x, y, -depth);
+                if y >= y1 || ghosted(&r) {
+                    continue;
+                }
+                out.push((r, V3::new(x, y, depth)));
+            }
+        }
+    }
+    out
+}
+
 /// Builds the 3D channel: the towed wall, the tank's images, the water at rest and hydrostatic.
 pub fn build(ch: &BentWallOptions, o: &Tow3dOptions) -> anyhow::Result<Scene3d> {
     ch.check()?;
@@ -200,8 +244,17 @@ pub fn build(ch: &BentWallOptions, o: &Tow3dOptions) -> anyhow::Result<Scene3d> 
         support,
         |r| r.z > -support && r.z < top && r.y < hi.y,
     )
-    .map_err(anyhow::Error::msg)?
-    .with_motion(motion);
+    .map_err(anyhow::Error::msg)?;
+    // The wall's own rule decides which nodes it ghosts (its nearest sample's side), as its constructor did.
+    let ghosted = |r: &V3| surface.signed_distance(r).is_some_and(|(d, _)| d < 0.0 && -d < support);
+    let corner = floor_corner_ghosts(
+        &wall,
+        (lo, dx, support),
+        &|x| xi0(x),
+        &ghosted,
+        (lo.x - support, hi.x + support + travel + o.ramp),
+    );
+    let surface = surface.with_extra_ghosts(&corner).with_motion(motion);
     let solid = |r: &V3| match surface.signed_distance(r) {
         Some((d, _)) => d < 0.0,
         None => behind_cut(&wall, xi0(r.x), r.y, r.z),
@@ -765,6 +818,51 @@ mod tests {
             );
         }
         assert!(s.wall_ghosts > 0);
+    }
+
+    /// Under the floor beside the wall's foot every lattice node within the kernel's reach of the foot is
+    /// filled once: by the wall's ghosts (behind its plane extended), by the corner's (the wedge between), or, in
+    /// front of the wedge, by the floor's images of the water above it; none twice.
+    #[test]
+    fn the_floor_corner_under_the_wall_foot_is_filled_once() {
+        let (ch, o) = small();
+        let s = build(&ch, &o).unwrap();
+        let gs = &s.sim.ghosts;
+        let dx = s.dx;
+        let support = s.sim.kernel.support;
+        let key = |r: &V3| [r.x, r.y, r.z].map(|c| (c / dx - 0.5).round() as i64);
+        let mut wall = std::collections::HashMap::new();
+        for (g, r) in gs.geom.pos.iter().enumerate() {
+            if gs.owner[g] == 1 {
+                *wall.entry(key(r)).or_insert(0) += 1;
+            }
+        }
+        assert!(wall.values().all(|&c| c == 1), "a node ghosted twice");
+        let mut checked = 0;
+        // The 45° wall behind the bent part, and a cut half way along it.
+        for xi in [X_START + 0.5 * ch.length, X_START + ch.length + 0.5] {
+            let x = ((xi - X_START + s.x_r) / dx).floor() * dx + 0.5 * dx;
+            let p = s.wall.plate((s.xi(x, 0.0) - X_START) / s.wall.length, 0.0);
+            for k in 1..=(support / dx).ceil() as i64 {
+                let z = -(k as f64 - 0.5) * dx;
+                for j in -40..40 {
+                    let y = (p.foot.x / dx).floor() * dx + (j as f64 + 0.5) * dx;
+                    // Within the kernel's reach of the foot, where the water's nearest particles are.
+                    if (y - p.foot.x).hypot(z) > support {
+                        continue;
+                    }
+                    let ghost = wall.contains_key(&key(&V3::new(x, y, z)));
+                    // The water reaches the wall's plane itself (a particle on it is fluid), so does its image.
+                    let image = y >= p.foot.x - z * p.theta.tan() - 1e-9;
+                    assert!(
+                        ghost != image,
+                        "ξ {xi}, y {y}, z {z}: ghost {ghost}, image region {image}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 20);
     }
 
     /// A run stopped at a step and resumed from its checkpoint reaches the same bits as one run straight through.

@@ -107,6 +107,21 @@ impl SurfaceWall {
         Ok(wall)
     }
 
+    /// The same wall with `extra` ghosts of the caller's (positions, mirror points and volumes at t = 0), carried
+    /// along with it: where the wall meets another boundary and neither's rule fills the solid behind both (the
+    /// bent-wall channel's floor corner, `compare3d::bent_wall_3d`).
+    pub fn with_extra_ghosts(mut self, extra: &[(V3, V3)]) -> Self {
+        for (r, m) in extra {
+            self.base.pos.push(*r);
+            self.base.interp.push(*m);
+            self.base.wall_vel.push(V3::zeros());
+            self.base.wall_acc.push(V3::zeros());
+            self.base.volume.push(self.ds.powi(3));
+            self.base.mirror.push(Mirror::Plane);
+        }
+        self
+    }
+
     /// The same wall translating with `motion` (its ghosts carried along, each with the wall's velocity and
     /// acceleration; off the fluid's lattice once it moves, as the 2D+t section's are).
     pub fn with_motion(mut self, motion: RigidMotion<3>) -> Self {
