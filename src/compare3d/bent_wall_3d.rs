@@ -22,10 +22,10 @@
 
 use super::bent_wall::{self as twodt, BentWallOptions};
 use super::towed_checkpoint;
-pub use super::towed_ship::CheckpointPolicy;
+pub use super::towed_checkpoint::CheckpointPolicy;
 use crate::analysis::wave_pattern::{eta_field_3d, Bins};
 use crate::driver::progress::{Progress, Status};
-use crate::driver::{drive, Ended, Flow, Halted, Outcome, Watch};
+use crate::driver::{drive, Ended, Flow, Outcome, Watch};
 use crate::geometry::bent_wall::{BentWall, X_START};
 use crate::io::atomic::write_atomic;
 use crate::io::csv_table::Table;
@@ -489,28 +489,8 @@ pub fn run(
         steps: sim.steps,
     });
     let clock = Instant::now();
-    let mut last_save = Instant::now();
-    let mut saver = Watch(|sim: &mut Simulation<3>| {
-        let Some(c) = checkpoint else {
-            return Ok(Flow::Step);
-        };
-        let halt = c.wall_limit.is_some_and(|w| clock.elapsed() >= w) || c.halt_at_step.is_some_and(|n| sim.steps >= n);
-        if halt || last_save.elapsed() >= c.every {
-            let path = c.dir.join(towed_checkpoint::FILE);
-            let mut st = state.borrow().clone();
-            st.wall_before = wall_before + clock.elapsed().as_secs_f64();
-            towed_checkpoint::save(&path, &fp, sim, &st)?;
-            last_save = Instant::now();
-            if halt {
-                return Ok(Flow::Halt(Halted {
-                    at: format!("{:.2} H travelled", travelled(sim.time)),
-                    steps: sim.steps,
-                    checkpoint: path,
-                }));
-            }
-        }
-        Ok(Flow::Step)
-    });
+    let at = |t: f64| format!("{:.2} H travelled", travelled(t));
+    let mut saver = towed_checkpoint::Saver::new(checkpoint, &fp, &state, wall_before, &at);
     let outcome = drive(&mut sim, &mut [&mut watch, &mut bar, &mut saver])?;
     let stopped = match outcome {
         Outcome::BlewUp(b) => Some(format!("blew up at {:.2} H travelled: {b}", travelled(sim.time))),

@@ -3,12 +3,15 @@
 //! `--wall-limit` and goes on from where it was, to the same bits (the time step carries no state besides the
 //! particles, the clock and the step count; the scene is rebuilt from the same options).
 
+use crate::driver::{Flow, Halted, Observer};
 use crate::io::checkpoint::Checkpoint;
 use crate::sph::particles::Fluid;
 use crate::sph::solver::{SimState, Simulation};
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
-use std::path::Path;
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
 
 /// File name of the checkpoint in a run's output folder.
 pub const FILE: &str = "checkpoint.bin";
@@ -28,6 +31,79 @@ pub struct Progress {
     pub next_frame: f64,
     #[serde(default)]
     pub frames: Vec<(f64, String)>,
+}
+
+/// Where and how often a towed run (the ship, the bent-wall channel in 3D) saves itself, and when it stops saved.
+#[derive(Clone, Debug)]
+pub struct CheckpointPolicy {
+    /// The run's folder: `checkpoint.bin` is read from it at the start (if it is of the same configuration) and
+    /// written to it.
+    pub dir: PathBuf,
+    /// Wall time between two saves.
+    pub every: Duration,
+    /// Save and stop once this session has used this much wall time.
+    pub wall_limit: Option<Duration>,
+    /// Save and stop once the run has taken this many steps (tests; jobs split by steps).
+    pub halt_at_step: Option<u64>,
+}
+
+/// The observer that saves a towed run every `policy.every` of wall time and halts it, saved, at the policy's
+/// wall-time or step limit (no policy: it does nothing); `at(t)` says where the run stands, for the halt's message.
+pub struct Saver<'a> {
+    policy: Option<&'a CheckpointPolicy>,
+    fingerprint: &'a str,
+    state: &'a RefCell<Progress>,
+    wall_before: f64,
+    at: &'a dyn Fn(f64) -> String,
+    clock: Instant,
+    last_save: Instant,
+}
+
+impl<'a> Saver<'a> {
+    /// `state` is the run's own progress, saved with the particles; `wall_before` the wall seconds of earlier
+    /// sessions.
+    pub fn new(
+        policy: Option<&'a CheckpointPolicy>,
+        fingerprint: &'a str,
+        state: &'a RefCell<Progress>,
+        wall_before: f64,
+        at: &'a dyn Fn(f64) -> String,
+    ) -> Self {
+        Saver {
+            policy,
+            fingerprint,
+            state,
+            wall_before,
+            at,
+            clock: Instant::now(),
+            last_save: Instant::now(),
+        }
+    }
+}
+
+impl Observer<Simulation<3>> for Saver<'_> {
+    fn observe(&mut self, sim: &mut Simulation<3>) -> anyhow::Result<Flow> {
+        let Some(c) = self.policy else {
+            return Ok(Flow::Step);
+        };
+        let halt =
+            c.wall_limit.is_some_and(|w| self.clock.elapsed() >= w) || c.halt_at_step.is_some_and(|n| sim.steps >= n);
+        if halt || self.last_save.elapsed() >= c.every {
+            let path = c.dir.join(FILE);
+            let mut st = self.state.borrow().clone();
+            st.wall_before = self.wall_before + self.clock.elapsed().as_secs_f64();
+            save(&path, self.fingerprint, sim, &st)?;
+            self.last_save = Instant::now();
+            if halt {
+                return Ok(Flow::Halt(Halted {
+                    at: (self.at)(sim.time),
+                    steps: sim.steps,
+                    checkpoint: path,
+                }));
+            }
+        }
+        Ok(Flow::Step)
+    }
 }
 
 #[derive(Serialize, Deserialize)]

@@ -16,7 +16,7 @@ use super::ship::{ShipScene, ShipTank};
 use super::towed_checkpoint;
 use crate::analysis::wave_pattern::{along_x, eta_field_3d, sample, tenth_contours, Bins};
 use crate::driver::progress::{Progress, Status};
-use crate::driver::{drive, Ended, Flow, Halted, Outcome, Watch};
+use crate::driver::{drive, Ended, Flow, Outcome, Watch};
 use crate::geometry::hydrostatics::section_hydro;
 use crate::geometry::surface::HullSurface;
 use crate::io::csv_table::Table;
@@ -27,7 +27,7 @@ use crate::sph::solver::BlowUp;
 use crate::twodt::scene::expected_max_speed;
 use nalgebra::Vector3;
 use std::path::{Path, PathBuf};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 const G: f64 = 9.81;
 
@@ -72,19 +72,7 @@ pub struct Frames {
     pub every_over_l: f64,
 }
 
-/// Checkpoints of a towed run ([`super::towed_checkpoint`]).
-#[derive(Clone, Debug)]
-pub struct CheckpointPolicy {
-    /// The run's folder: `checkpoint.bin` is read from it at the start (if it is of the same configuration) and
-    /// written to it.
-    pub dir: PathBuf,
-    /// Wall time between two saves.
-    pub every: Duration,
-    /// Save and stop once this session has used this much wall time.
-    pub wall_limit: Option<Duration>,
-    /// Save and stop once the run has taken this many steps (tests; jobs split by steps).
-    pub halt_at_step: Option<u64>,
-}
+pub use super::towed_checkpoint::CheckpointPolicy;
 
 /// The towed run's options as a user sets them: the same struct is `bowwave ship`'s flattened options (each doc
 /// comment its `--help`) and a study's `[ship3d]` table (the same key names, `_` for `-`), so that the two cannot
@@ -537,28 +525,8 @@ pub fn run(opts: &TowedShip, progress: bool) -> anyhow::Result<Ended<TowedResult
         }
     });
     let clock = Instant::now();
-    let mut last_save = Instant::now();
-    let mut saver = Watch(|sim: &mut crate::sph::solver::Simulation<3>| {
-        let Some(c) = &opts.checkpoint else {
-            return Ok(Flow::Step);
-        };
-        let halt = c.wall_limit.is_some_and(|w| clock.elapsed() >= w) || c.halt_at_step.is_some_and(|n| sim.steps >= n);
-        if halt || last_save.elapsed() >= c.every {
-            let path = c.dir.join(towed_checkpoint::FILE);
-            let mut st = state.borrow().clone();
-            st.wall_before = wall_before + clock.elapsed().as_secs_f64();
-            towed_checkpoint::save(&path, &fingerprint, sim, &st)?;
-            last_save = Instant::now();
-            if halt {
-                return Ok(Flow::Halt(Halted {
-                    at: format!("{:.3} L travelled", travel(sim.time)),
-                    steps: sim.steps,
-                    checkpoint: path,
-                }));
-            }
-        }
-        Ok(Flow::Step)
-    });
+    let at = |t: f64| format!("{:.3} L travelled", travel(t));
+    let mut saver = towed_checkpoint::Saver::new(opts.checkpoint.as_ref(), &fingerprint, &state, wall_before, &at);
     let outcome = drive(&mut sim, &mut [&mut framer, &mut watch, &mut bar, &mut saver])?;
     let blow_up = match outcome {
         Outcome::BlewUp(b) => Some(b),

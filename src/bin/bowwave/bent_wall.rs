@@ -1,14 +1,13 @@
 //! `bent-wall`: the bent-wall channel of thesis §10.2.1 in 2D+t (the plate of eq. 10.8's cut), and
 //! `bent-wall-3d`: the same channel in 3D beside it.
 
-use crate::options::{halted, minutes, BLEW_UP};
+use crate::options::{halted, towed_policy, BLEW_UP};
 use bowwave::compare3d::bent_wall::{run, summary, write_outputs, BentWallOptions};
-use bowwave::compare3d::bent_wall_3d::{self, CheckpointPolicy, Tow3dOptions};
+use bowwave::compare3d::bent_wall_3d::{self, Tow3dOptions};
 use bowwave::driver::Ended;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Duration;
 
 /// The channel, the same for both models.
 #[derive(Args)]
@@ -178,18 +177,7 @@ impl BentWall3dArgs {
             .out
             .unwrap_or_else(|| PathBuf::from(format!("out/bent-wall-3d-fr{}-res{}", ch.fr_h, ch.res)));
         std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
-        let every = minutes("--checkpoint-every", self.checkpoint_every)?;
-        let wall_limit = self
-            .wall_limit
-            .map(|w| minutes("--wall-limit", w))
-            .transpose()?
-            .flatten();
-        let policy = (every.is_some() || wall_limit.is_some()).then(|| CheckpointPolicy {
-            dir: out.clone(),
-            every: every.unwrap_or(Duration::MAX),
-            wall_limit,
-            halt_at_step: None,
-        });
+        let policy = towed_policy(self.checkpoint_every, self.wall_limit, &out)?;
         let r = match bent_wall_3d::run(&ch, &o, policy.as_ref(), !self.quiet)? {
             Ended::Ran(r) => r,
             Ended::Halted(h) => return Ok(halted(&h)),

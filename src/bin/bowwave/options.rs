@@ -39,6 +39,25 @@ pub fn checkpoint_policy(
     })
 }
 
+/// The checkpoint policy of a towed 3D run (`ship`, `bent-wall-3d`) from `--checkpoint-every` and `--wall-limit`
+/// (minutes), saving into `dir`; `None` when neither asks for one.
+pub fn towed_policy(
+    every: f64,
+    wall_limit: Option<f64>,
+    dir: &std::path::Path,
+) -> anyhow::Result<Option<bowwave::compare3d::towed_checkpoint::CheckpointPolicy>> {
+    let every = minutes("--checkpoint-every", every)?;
+    let wall_limit = wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten();
+    Ok(
+        (every.is_some() || wall_limit.is_some()).then(|| bowwave::compare3d::towed_checkpoint::CheckpointPolicy {
+            dir: dir.to_path_buf(),
+            every: every.unwrap_or(std::time::Duration::MAX),
+            wall_limit,
+            halt_at_step: None,
+        }),
+    )
+}
+
 /// Exit status of a run that blew up (its outputs and diagnosis kept).
 pub const BLEW_UP: u8 = 2;
 

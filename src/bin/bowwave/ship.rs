@@ -1,14 +1,13 @@
 //! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
 
-use crate::options::{halted, minutes, BLEW_UP};
-use bowwave::compare3d::towed_ship::{self, CheckpointPolicy, TowOptions, TowedShip};
+use crate::options::{halted, towed_policy, BLEW_UP};
+use bowwave::compare3d::towed_ship::{self, TowOptions, TowedShip};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::io::atomic::write_atomic;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Duration;
 
 #[derive(Args)]
 pub struct ShipArgs {
@@ -102,20 +101,7 @@ impl ShipArgs {
         }
         let manifest = towed_ship::manifest(&opts, &self.hull, &offsets)?;
         write_atomic(&out.join("manifest.json"), manifest.as_bytes())?;
-        let every = minutes("--checkpoint-every", self.checkpoint_every)?;
-        let wall_limit = self
-            .wall_limit
-            .map(|w| minutes("--wall-limit", w))
-            .transpose()?
-            .flatten();
-        if every.is_some() || wall_limit.is_some() {
-            opts.checkpoint = Some(CheckpointPolicy {
-                dir: out.clone(),
-                every: every.unwrap_or(Duration::MAX),
-                wall_limit,
-                halt_at_step: None,
-            });
-        }
+        opts.checkpoint = towed_policy(self.checkpoint_every, self.wall_limit, &out)?;
         let r = match towed_ship::run(&opts, !self.quiet)? {
             Ended::Ran(r) => r,
             Ended::Halted(h) => return Ok(halted(&h)),
