@@ -1,7 +1,7 @@
 //! `bent-wall`: the bent-wall channel of thesis §10.2.1 in 2D+t (the plate of eq. 10.8's cut), and
 //! `bent-wall-3d`: the same channel in 3D beside it.
 
-use crate::options::{halted, towed_policy, BLEW_UP};
+use crate::options::{halted, TowedCheckpointArgs, BLEW_UP};
 use bowwave::compare3d::bent_wall::{run, summary, write_outputs, BentWallOptions};
 use bowwave::compare3d::bent_wall_3d::{self, Tow3dOptions};
 use bowwave::driver::Ended;
@@ -125,14 +125,8 @@ pub struct BentWall3dArgs {
     /// Distance travelled between two samples of the crest's history, in H.
     #[arg(long, default_value_t = Tow3dOptions::default().sample)]
     pub sample: f64,
-    /// Minutes of wall time between checkpoints (OUT/checkpoint.bin; 0: none). The same command run again goes on
-    /// from the checkpoint, to the same bits.
-    #[arg(long, default_value_t = 10.0)]
-    pub checkpoint_every: f64,
-    /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
-    /// again to go on.
-    #[arg(long)]
-    pub wall_limit: Option<f64>,
+    #[command(flatten)]
+    pub checkpoint: TowedCheckpointArgs,
     /// Output folder for bent_wall_3d.csv (the cuts, 3D beside 2D+t), bent_wall_3d_history.csv,
     /// bent_wall_3d_eta.csv, bent_wall_3d.json, bent_wall_3d_heights.png and bent_wall_3d_eta.png (default out/bent-wall-3d-frF-resN).
     #[arg(long)]
@@ -177,7 +171,7 @@ impl BentWall3dArgs {
             .out
             .unwrap_or_else(|| PathBuf::from(format!("out/bent-wall-3d-fr{}-res{}", ch.fr_h, ch.res)));
         std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", out.display()))?;
-        let policy = towed_policy(self.checkpoint_every, self.wall_limit, &out)?;
+        let policy = self.checkpoint.policy(&out)?;
         let r = match bent_wall_3d::run(&ch, &o, policy.as_ref(), !self.quiet)? {
             Ended::Ran(r) => r,
             Ended::Halted(h) => return Ok(halted(&h)),

@@ -39,23 +39,40 @@ pub fn checkpoint_policy(
     })
 }
 
-/// The checkpoint policy of a towed 3D run (`ship`, `bent-wall-3d`) from `--checkpoint-every` and `--wall-limit`
-/// (minutes), saving into `dir`; `None` when neither asks for one.
-pub fn towed_policy(
-    every: f64,
-    wall_limit: Option<f64>,
-    dir: &std::path::Path,
-) -> anyhow::Result<Option<bowwave::compare3d::towed_checkpoint::CheckpointPolicy>> {
-    let every = minutes("--checkpoint-every", every)?;
-    let wall_limit = wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten();
-    Ok(
-        (every.is_some() || wall_limit.is_some()).then(|| bowwave::compare3d::towed_checkpoint::CheckpointPolicy {
-            dir: dir.to_path_buf(),
-            every: every.unwrap_or(std::time::Duration::MAX),
-            wall_limit,
-            halt_at_step: None,
-        }),
-    )
+/// `--checkpoint-every` and `--wall-limit` of a towed 3D run (`ship`, `bent-wall-3d`).
+#[derive(clap::Args)]
+pub struct TowedCheckpointArgs {
+    /// Minutes of wall time between checkpoints (OUT/checkpoint.bin; 0: none). The same command run again goes on
+    /// from the checkpoint, to the same bits.
+    #[arg(long, default_value_t = 10.0)]
+    pub checkpoint_every: f64,
+    /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
+    /// again to go on.
+    #[arg(long)]
+    pub wall_limit: Option<f64>,
+}
+
+impl TowedCheckpointArgs {
+    /// The policy saving into `dir`; `None` when neither option asks for one.
+    pub fn policy(
+        &self,
+        dir: &std::path::Path,
+    ) -> anyhow::Result<Option<bowwave::compare3d::towed_checkpoint::CheckpointPolicy>> {
+        let every = minutes("--checkpoint-every", self.checkpoint_every)?;
+        let wall_limit = self
+            .wall_limit
+            .map(|w| minutes("--wall-limit", w))
+            .transpose()?
+            .flatten();
+        Ok(
+            (every.is_some() || wall_limit.is_some()).then(|| bowwave::compare3d::towed_checkpoint::CheckpointPolicy {
+                dir: dir.to_path_buf(),
+                every: every.unwrap_or(std::time::Duration::MAX),
+                wall_limit,
+                halt_at_step: None,
+            }),
+        )
+    }
 }
 
 /// Exit status of a run that blew up (its outputs and diagnosis kept).

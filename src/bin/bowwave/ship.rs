@@ -1,6 +1,6 @@
 //! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
 
-use crate::options::{halted, towed_policy, BLEW_UP};
+use crate::options::{halted, TowedCheckpointArgs, BLEW_UP};
 use bowwave::compare3d::towed_ship::{self, TowOptions, TowedShip};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
@@ -29,14 +29,8 @@ pub struct ShipArgs {
     /// Run it at the same spacing: `bowwave twodt --hull H --fr F --dx (D/L)/res --ratio 1 --until transom`.
     #[arg(long)]
     pub twodt: Option<PathBuf>,
-    /// Minutes of wall time between checkpoints (OUT/checkpoint.bin; 0: none). The same command run again goes on
-    /// from the checkpoint, to the same bits.
-    #[arg(long, default_value_t = 10.0)]
-    pub checkpoint_every: f64,
-    /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
-    /// again to go on.
-    #[arg(long)]
-    pub wall_limit: Option<f64>,
+    #[command(flatten)]
+    pub checkpoint: TowedCheckpointArgs,
     /// Output folder (default out/ship-NAME-frF-resR).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -101,7 +95,7 @@ impl ShipArgs {
         }
         let manifest = towed_ship::manifest(&opts, &self.hull, &offsets)?;
         write_atomic(&out.join("manifest.json"), manifest.as_bytes())?;
-        opts.checkpoint = towed_policy(self.checkpoint_every, self.wall_limit, &out)?;
+        opts.checkpoint = self.checkpoint.policy(&out)?;
         let r = match towed_ship::run(&opts, !self.quiet)? {
             Ended::Ran(r) => r,
             Ended::Halted(h) => return Ok(halted(&h)),
