@@ -246,7 +246,7 @@ pub fn build(ch: &BentWallOptions, o: &Tow3dOptions) -> anyhow::Result<Scene3d> 
     )
     .map_err(anyhow::Error::msg)?;
     // The wall's own rule decides which nodes it ghosts (its nearest sample's side), as its constructor did.
-    let ghosted = |r: &V3| surface.signed_distance(r).is_some_and(|(d, _)| d < 0.0 && -d < support);
+    let ghosted = |r: &V3| surface.ghost_side(r).is_some();
     let corner = floor_corner_ghosts(
         &wall,
         (lo, dx, support),

@@ -90,16 +90,10 @@ impl SurfaceWall {
             for j in first(1)..=last(1) {
                 for i in first(0)..=last(0) {
                     let r = origin + V3::new(i as f64 + 0.5, j as f64 + 0.5, k as f64 + 0.5) * ds;
-                    let Some((d, n)) = wall.signed_distance(&r) else {
-                        continue;
-                    };
-                    if d < 0.0 && -d < support && keep(&r) {
-                        wall.base.pos.push(r);
-                        wall.base.interp.push(r - n * (2.0 * d));
-                        wall.base.wall_vel.push(V3::zeros());
-                        wall.base.wall_acc.push(V3::zeros());
-                        wall.base.volume.push(ds.powi(3));
-                        wall.base.mirror.push(Mirror::Plane);
+                    if let Some((d, n)) = wall.ghost_side(&r) {
+                        if keep(&r) {
+                            wall.push_ghost(r, r - n * (2.0 * d));
+                        }
                     }
                 }
             }
@@ -112,14 +106,24 @@ impl SurfaceWall {
     /// bent-wall channel's floor corner, `compare3d::bent_wall_3d`).
     pub fn with_extra_ghosts(mut self, extra: &[(V3, V3)]) -> Self {
         for (r, m) in extra {
-            self.base.pos.push(*r);
-            self.base.interp.push(*m);
-            self.base.wall_vel.push(V3::zeros());
-            self.base.wall_acc.push(V3::zeros());
-            self.base.volume.push(self.ds.powi(3));
-            self.base.mirror.push(Mirror::Plane);
+            self.push_ghost(*r, *m);
         }
         self
+    }
+
+    /// The signed distance and normal at lattice node `r` if the wall's rule makes it a ghost: on the solid side
+    /// of its nearest sample, within the kernel support of it (the constructor's `keep` aside).
+    pub fn ghost_side(&self, r: &V3) -> Option<(f64, V3)> {
+        self.signed_distance(r).filter(|(d, _)| *d < 0.0 && -d < self.support)
+    }
+
+    fn push_ghost(&mut self, r: V3, mirror: V3) {
+        self.base.pos.push(r);
+        self.base.interp.push(mirror);
+        self.base.wall_vel.push(V3::zeros());
+        self.base.wall_acc.push(V3::zeros());
+        self.base.volume.push(self.ds.powi(3));
+        self.base.mirror.push(Mirror::Plane);
     }
 
     /// The same wall translating with `motion` (its ghosts carried along, each with the wall's velocity and
