@@ -223,14 +223,11 @@ pub fn build(ch: &BentWallOptions, o: &Tow3dOptions) -> anyhow::Result<Scene3d> 
             free as f64 / 1024f64.powi(3)
         );
     }
-    // The wall's samples, a quarter spacing apart, over every ξ the tank sees during the run.
+    // The Earth-frame x the wall passes over during the run (the tank within the kernel's reach, the wall's
+    // whole travel): its samples, a quarter spacing apart, and its floor-corner ghosts cover it.
     let xi0 = |x: f64| x - x_r + X_START;
-    let cloud = wall.oriented_points(
-        0.25 * dx,
-        xi0(lo.x - support),
-        xi0(hi.x + support) + travel + o.ramp,
-        o.top,
-    );
+    let x_seen = (lo.x - support, hi.x + support + travel + o.ramp);
+    let cloud = wall.oriented_points(0.25 * dx, xi0(x_seen.0), xi0(x_seen.1), o.top);
     let top = hi.z;
     let surface = SurfaceWall::new(
         "bent wall",
@@ -247,13 +244,7 @@ pub fn build(ch: &BentWallOptions, o: &Tow3dOptions) -> anyhow::Result<Scene3d> 
     .map_err(anyhow::Error::msg)?;
     // The wall's own rule decides which nodes it ghosts (its nearest sample's side), as its constructor did.
     let ghosted = |r: &V3| surface.ghost_side(r).is_some();
-    let corner = floor_corner_ghosts(
-        &wall,
-        (lo, dx, support),
-        &|x| xi0(x),
-        &ghosted,
-        (lo.x - support, hi.x + support + travel + o.ramp),
-    );
+    let corner = floor_corner_ghosts(&wall, (lo, dx, support), &|x| xi0(x), &ghosted, x_seen);
     let surface = surface.with_extra_ghosts(&corner).with_motion(motion);
     let solid = |r: &V3| match surface.signed_distance(r) {
         Some((d, _)) => d < 0.0,

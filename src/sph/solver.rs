@@ -492,25 +492,41 @@ impl<const D: usize> Simulation<D> {
                 || Vec::with_capacity(64),
                 |nb: &mut Vec<(usize, SVector<f64, D>, f64)>, g| {
                     let xi = geom.interp[g];
+                    let r_gi = geom.pos[g] - xi;
+                    let dist = r_gi.norm();
+                    let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
+                    let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
+                    let wall_vel = geom.wall_vel[g];
+                    if let Some(&j) = g.checked_sub(n_fixed).map(|k| &image_source[k]) {
+                        // An image carries its particle's values, mirrored: free slip (7.2) and the Neumann
+                        // condition (7.4) from the particle itself. Its density gradient is its particle's, known
+                        // after stage 4 (`mirror_image_gradients`); here only the Neumann normal part n dρ/dn.
+                        let (eos, ghost_phase) = match multi {
+                            None => (eos, 0),
+                            Some(mf) => (*mf.eos(phase[j]), phase[j]),
+                        };
+                        let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
+                        let p =
+                            ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
+                        let u_ns = ghost_conditions::no_slip_velocity(&vel[j], &wall_vel);
+                        let dn = eos.drho_dp(rho[j]) * rho[j] * (a_body - geom.wall_acc[g]).dot(&n);
+                        return (u, eos.density(p), p, n * dn, volume[j], ghost_phase, u_ns);
+                    }
                     nb.clear();
                     // The fluid only (indices below nf): the scan of each cell stops at its first ghost.
                     cells.for_each_below_within(all_pos, &xi, kernel.support, nf, |j, rij, r| {
                         nb.push((j, rij, kernel.w(r) * volume[j]));
                     });
-                    let wall_vel = geom.wall_vel[g];
                     if nb.is_empty() {
                         // The mirror image of empty space is empty: this ghost takes no part.
                         return (wall_vel, eos.rho0, 0.0, SVector::zeros(), 0.0, 0, wall_vel);
                     }
-                    // With several phases the ghost is of the phase of the particle nearest its mirror point (an
-                    // image: of its particle's), valued from that phase only.
+                    // With several phases the ghost is of the phase of the particle nearest its mirror point,
+                    // valued from that phase only.
                     let (eos, ghost_phase) = match multi {
                         None => (eos, 0),
                         Some(mf) => {
-                            let k = match g.checked_sub(n_fixed) {
-                                Some(k) => phase[image_source[k]],
-                                None => phase[nearest(nb)],
-                            };
+                            let k = phase[nearest(nb)];
                             nb.retain(|n| phase[n.0] == k);
                             (*mf.eos(k), k)
                         }
@@ -534,21 +550,8 @@ impl<const D: usize> Simulation<D> {
                         u_i += vel[*j] * w;
                         grad_i += gw * rho[*j];
                     }
-                    let r_gi = geom.pos[g] - xi;
-                    let dist = r_gi.norm();
-                    let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
-                    let a_body = body.acceleration(&((geom.pos[g] + xi) * 0.5));
                     let dn = eos.drho_dp(rho_i) * rho_i * (a_body - geom.wall_acc[g]).dot(&n);
-                    let grad_g = grad_i - n * grad_i.dot(&n) + n * dn;
-                    if let Some(&j) = g.checked_sub(n_fixed).map(|k| &image_source[k]) {
-                        // An image carries its particle's values, mirrored: free slip (7.2) and the Neumann
-                        // condition (7.4) from the particle itself; the density gradient from the fit above.
-                        let u = ghost_conditions::free_slip_velocity(&vel[j], &wall_vel, &n);
-                        let p =
-                            ghost_conditions::neumann_pressure(pressure[j], rho[j], &a_body, &geom.wall_acc[g], &r_gi);
-                        let u_ns = ghost_conditions::no_slip_velocity(&vel[j], &wall_vel);
-                        return (u, eos.density(p), p, grad_g, volume[j], ghost_phase, u_ns);
-                    }
+                    let grad_g = ghost_conditions::neumann_density_gradient(&grad_i, &n, dn);
                     let p_g = ghost_conditions::neumann_pressure(p_i, rho_i, &a_body, &geom.wall_acc[g], &r_gi);
                     let u_g = match geom.mirror[g] {
                         Mirror::Plane => ghost_conditions::free_slip_velocity(&u_i, &wall_vel, &n),
@@ -643,6 +646,8 @@ impl<const D: usize> Simulation<D> {
                 })
             }
         };
+        mirror_image_gradients(&mut self.ghosts, &self.grad_rho);
+        let gs = &self.ghosts;
         self.timings.density_gradient += clock.elapsed().as_secs_f64();
         let clock = Instant::now();
         if let Some(mf) = &cfg.multi_fluid {
@@ -1130,6 +1135,21 @@ impl<const D: usize> GradientPass<'_, D> {
     }
 }
 
+/// Completes each image ghost's density gradient: its particle's renormalised gradient (stage 4) with the normal
+/// part replaced by the Neumann one that [`Simulation::prepare`] left in `grad_rho` (an image of a particle at its
+/// mirror point has the particle's tangential gradient, and along the normal the hydrostatic one of (7.4)).
+fn mirror_image_gradients<const D: usize>(gs: &mut GhostState<D>, grad_rho: &[SVector<f64, D>]) {
+    let n_fixed = gs.n_fixed;
+    for (k, &j) in gs.image_source.iter().enumerate() {
+        let g = n_fixed + k;
+        let r_gi = gs.geom.pos[g] - gs.geom.interp[g];
+        let dist = r_gi.norm();
+        let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
+        let dn = gs.grad_rho[g].dot(&n);
+        gs.grad_rho[g] = ghost_conditions::neumann_density_gradient(&grad_rho[j], &n, dn);
+    }
+}
+
 /// The fluid particle nearest to the point the neighbours `nb` were gathered around (the first of equals).
 fn nearest<const D: usize>(nb: &[(usize, SVector<f64, D>, f64)]) -> usize {
     let mut best = (f64::INFINITY, 0);
@@ -1183,4 +1203,54 @@ fn shepard_pressures<const D: usize>(
         .map(|(&r, &k)| mf.pressure(k, r))
         .collect();
     (rho_s, p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sph::box_wall::BoxWall;
+    use crate::sph::polyline_wall::GhostKind;
+    use nalgebra::Vector2;
+
+    /// An image ghost's density gradient is its particle's renormalised one along the wall and the Neumann
+    /// condition's dρ/dn = (dρ/dp) ρ g·n across it: the image carries its particle's values, the gradient too.
+    #[test]
+    fn image_ghost_takes_its_particles_tangential_density_gradient_and_the_neumann_normal_one() {
+        let (dx, g) = (0.05, 9.81);
+        let mut cfg = SolverConfig::new(dx, 1000.0, 20.0, BodyForce::Uniform(Vector2::new(0.0, -g)));
+        cfg.domain = Some((Vector2::new(-1.0, -1.0), Vector2::new(2.0, 2.0)));
+        let support = cfg.kernel.support_over_h() * cfg.h;
+        let wall = BoxWall::new("tank", Vector2::zeros(), Vector2::new(0.5, 0.5), dx, support)
+            .unwrap()
+            .with_ghosts(GhostKind::Images);
+        let mut fluid = Fluid::default();
+        for i in 0..10 {
+            for k in 0..8 {
+                let x = Vector2::new((i as f64 + 0.5) * dx, (k as f64 + 0.5) * dx);
+                // Hydrostatic, with a density that also varies along x so the tangential gradient is not zero.
+                let p = 1000.0 * g * (0.4 - x.y) + 50.0 * x.x;
+                let rho = cfg.eos.density(p);
+                fluid.push(x, Vector2::zeros(), rho, rho * dx * dx, 0.0);
+            }
+        }
+        let eos = cfg.eos;
+        let mut sim = Simulation::new(cfg, fluid, vec![Box::new(wall)]);
+        let (pos, vel, rho) = (sim.fluid.pos.clone(), sim.fluid.vel.clone(), sim.fluid.rho.clone());
+        sim.rates(0.0, &pos, &vel, &rho);
+        let gs = &sim.ghosts;
+        assert!(gs.image_source.len() > 20, "{} images", gs.image_source.len());
+        for (k, &j) in gs.image_source.iter().enumerate() {
+            let gi = gs.n_fixed + k;
+            let n = (gs.geom.pos[gi] - gs.geom.interp[gi]).normalize();
+            let (grad_g, grad_j) = (gs.grad_rho[gi], sim.grad_rho[j]);
+            let tangential = |v: Vector2<f64>| v - n * v.dot(&n);
+            assert!((tangential(grad_g) - tangential(grad_j)).norm() <= 1e-12 * grad_j.norm().max(1.0));
+            let dn = eos.drho_dp(rho[j]) * rho[j] * Vector2::new(0.0, -g).dot(&n);
+            assert!(
+                (grad_g.dot(&n) - dn).abs() <= 1e-12 * dn.abs().max(1.0),
+                "{} against {dn}",
+                grad_g.dot(&n)
+            );
+        }
+    }
 }

@@ -103,6 +103,18 @@ pub fn neumann_pressure<const D: usize>(
     p_i + rho_i * (body - wall_acc).dot(r_gi)
 }
 
+/// A ghost's density gradient (the δ-SPH diffusion term reads it): the tangential part of `grad_i`, the gradient
+/// at the mirror point, and the normal part `dn` the Neumann condition gives, dρ/dn = (dρ/dp) ρ (g − a_B)·n, the
+/// derivative of (7.4) along n.
+#[inline]
+pub fn neumann_density_gradient<const D: usize>(
+    grad_i: &SVector<f64, D>,
+    n: &SVector<f64, D>,
+    dn: f64,
+) -> SVector<f64, D> {
+    grad_i - n * grad_i.dot(n) + n * dn
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
