@@ -276,9 +276,9 @@ fn tank_motion(opts: &TowedShip, l: f64) -> RigidMotion<3> {
 }
 
 /// Throughput of the towed Wigley on this project's 2-core machine, particle-steps per second on 2 threads with
-/// the cores to itself (`bowwave bench --ship --res 5`, 89 436 particles: 4.03e4; 4.29e4 at 196 856; session
-/// 31, BENCHMARKS.md), for [`plan`]'s estimate. Shared cores give less (session 30's first run: 1.45e4).
-pub const MEASURED_THROUGHPUT: f64 = 4.0e4;
+/// the cores to itself (`bowwave bench --ship --res 5,6.5`: 5.82e4 at 89 436 particles, 5.83e4 at 196 856;
+/// session 37, BENCHMARKS.md), for [`plan`]'s estimate. Shared cores give less.
+pub const MEASURED_THROUGHPUT: f64 = 5.8e4;
 
 /// What a towed run will cost, before it runs: particles, hull ghosts, c0 and the steps to the shortest and the
 /// longest travel (the time step as the sound speed sets it, Δt = CFL h / c0).
