@@ -39,6 +39,7 @@ fn snapshot(pos: Vec<V2>, vel: Vec<V2>, dx: f64) -> Snapshot {
         lambda: fs.lambda,
         h,
         dx,
+        index: vec![],
     }
 }
 

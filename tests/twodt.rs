@@ -176,6 +176,29 @@ fn bad_twodt_options_are_refused_with_what_was_expected() {
             },
             "Froude",
         ),
+        (
+            TwoDtConfig {
+                air: Some(0.0),
+                ..base.clone()
+            },
+            "air layer height",
+        ),
+        (
+            TwoDtConfig {
+                air: Some(1.0),
+                air_density: 2.0,
+                ..base.clone()
+            },
+            "air density",
+        ),
+        (
+            // Above the tank's walls (the hull's top plus D).
+            TwoDtConfig {
+                air: Some(9.0),
+                ..base.clone()
+            },
+            "--air",
+        ),
     ];
     for (cfg, needle) in cases {
         let e = format!(
@@ -200,6 +223,103 @@ fn still_tank_before_the_stem_stays_at_rest() {
     let (ke_max, far) = still_tank(&uniform, "uniform");
     assert!(ke_max < 1e-6, "E_K/(M g D) = {ke_max}");
     assert!(far < 0.005);
+}
+
+/// With an air layer (`--air 1`: 1 D of air at a density ratio of 1000 under the lid) the tank before the
+/// stem stays at rest too: after the settling (three acoustic crossings with air) E_K/(M g D) falls below
+/// 1e-6 within 0.15 L of travel and stays there (measured 5e-7 at dx/L 4e-3), the water's far-field level
+/// stays within 0.5 % of D (0.39 %), and the interface keeps no gap: in every column the lowest air particle
+/// is within two spacings of the highest water particle (the rows of the two phases stand about 1.5 dx
+/// apart, as in the closed two-layer tank, `validate two-layer`).
+#[test]
+fn still_tank_with_air_stays_at_rest_without_a_gap_at_the_interface() {
+    let dx = 4e-3;
+    let cfg = TwoDtConfig {
+        coarse_ratio: 1.0,
+        dx: Some(dx),
+        air: Some(1.0),
+        vtk: true,
+        ..athena_cfg(Some(-0.4), Until::X(-0.2))
+    };
+    let dir = std::env::temp_dir().join(format!("bowwave-still-air-{}", std::process::id()));
+    let r = run(athena(), &cfg, &quiet_options(&dir, false)).expect("still tank with air");
+    let series = std::fs::read_to_string(dir.join("series.csv")).expect("series");
+    let mut lines = series.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let (kx, kk) = (
+        header.iter().position(|c| *c == "x_over_l").unwrap(),
+        header.iter().position(|c| *c == "ke_over_mgd").unwrap(),
+    );
+    let rows: Vec<(f64, f64)> = lines
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+            (v[kx], v[kk])
+        })
+        .collect();
+    println!(
+        "still tank with air: E_K/(M g D) along x/L {rows:?}; far field {:.2e} D",
+        r.far_field_eta_over_d
+    );
+    let late = rows.iter().filter(|(x, _)| *x > -0.25);
+    assert!(late.clone().count() >= 2);
+    for (x, ke) in late {
+        assert!(*ke < 1e-6, "E_K/(M g D) = {ke} at x/L {x}");
+    }
+    assert!(
+        r.far_field_eta_over_d < 0.005,
+        "far-field level {} D",
+        r.far_field_eta_over_d
+    );
+    assert_eq!(r.air_over_d, Some(1.0));
+    // The last frame: phases and positions.
+    let last = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "vtp"))
+        .max()
+        .expect("a VTK frame");
+    let text = std::fs::read_to_string(&last).unwrap();
+    let array = |name: &str| -> Vec<f64> {
+        let start = text
+            .find(&format!("Name=\"{name}\""))
+            .unwrap_or_else(|| panic!("no {name}"));
+        let body = &text[start..];
+        let (a, b) = (body.find('>').unwrap() + 1, body.find("</DataArray>").unwrap());
+        body[a..b].split_whitespace().map(|x| x.parse().unwrap()).collect()
+    };
+    let points = {
+        let start = text.find("<Points>").unwrap();
+        let body = &text[start..];
+        let body = &body[body.find("<DataArray").unwrap()..];
+        let (a, b) = (body.find('>').unwrap() + 1, body.find("</DataArray>").unwrap());
+        body[a..b]
+            .split_whitespace()
+            .map(|x| x.parse::<f64>().unwrap())
+            .collect::<Vec<_>>()
+    };
+    let phase = array("phase");
+    assert_eq!(points.len(), 3 * phase.len());
+    let width = (0..phase.len()).map(|i| points[3 * i]).fold(0.0, f64::max);
+    let columns = (width / dx).ceil() as usize;
+    let (mut top_water, mut low_air) = (vec![f64::NEG_INFINITY; columns + 1], vec![f64::INFINITY; columns + 1]);
+    for (i, &k) in phase.iter().enumerate() {
+        let (y, z) = (points[3 * i], points[3 * i + 1]);
+        let c = (y / dx) as usize;
+        if k == 0.0 {
+            top_water[c] = top_water[c].max(z);
+        } else {
+            low_air[c] = low_air[c].min(z);
+        }
+    }
+    let gap = top_water
+        .iter()
+        .zip(&low_air)
+        .filter(|(w, a)| w.is_finite() && a.is_finite())
+        .map(|(w, a)| a - w)
+        .fold(0.0, f64::max);
+    println!("largest water-to-air distance over the columns: {:.2} dx", gap / dx);
+    assert!(gap < 2.0 * dx, "a gap of {} dx opened at the interface", gap / dx);
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// Largest E_K/(M g D) over the series and the far-field level / D of a still-tank run (section before the

@@ -22,6 +22,9 @@ pub struct Snapshot {
     pub h: f64,
     /// Finest particle spacing dx.
     pub dx: f64,
+    /// Each particle's index in the simulation's fluid at the time (a snapshot of one phase holds a subset);
+    /// empty for a particle set built by hand.
+    pub index: Vec<usize>,
 }
 
 impl Snapshot {
@@ -43,6 +46,7 @@ impl Snapshot {
             lambda: keep.iter().map(|&i| fs.lambda[i]).collect(),
             h: sim.kernel.h,
             dx,
+            index: keep,
         }
     }
 

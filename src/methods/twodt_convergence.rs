@@ -246,6 +246,7 @@ mod tests {
                 ..Default::default()
             }),
             blowup: None,
+            air_over_d: None,
         }
     }
 

@@ -141,6 +141,7 @@ pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f6
     put("mass", f.mass.clone());
     put("id", f.id.iter().map(|&i| i as f64).collect());
     put("tag", f.tag.clone());
+    put("phase", f.phase.iter().map(|&k| k as f64).collect());
     put("initial_depth", scene.initial_depth.clone());
     put("initial_row", scene.initial_row.iter().map(|&r| r as f64).collect());
     let mut tables = vec![];
@@ -254,8 +255,11 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
             mass: a("mass")?.to_vec(),
             id: a("id")?.iter().map(|&i| i as u32).collect(),
             tag: a("tag")?.to_vec(),
-            // The 2D+t run is single-phase.
-            phase: vec![0; a("rho")?.len()],
+            // Water (0) and, with `--air`, air (1); a checkpoint written before air was possible holds water.
+            phase: match c.arrays.contains_key("phase") {
+                true => a("phase")?.iter().map(|&k| k as u8).collect(),
+                false => vec![0; n],
+            },
         },
         time: h.time,
         steps: h.steps,

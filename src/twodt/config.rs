@@ -249,7 +249,8 @@ pub struct TwoDtConfig {
     /// thesis §4.1, Mach ≤ 0.1).
     #[arg(long)]
     pub c0: Option<f64>,
-    /// Damped settling before the ship starts, in acoustic crossings of the depth (Z/c0).
+    /// Damped settling before the ship starts, in acoustic crossings of the depth (Z/c0); with `--air`, three
+    /// times as many (`scene::AIR_SETTLE_FACTOR`).
     #[arg(long = "settle", value_name = "CROSSINGS", default_value_t = d().settle_crossings)]
     #[serde(rename = "settle")]
     pub settle_crossings: f64,
@@ -288,6 +289,17 @@ pub struct TwoDtConfig {
     /// calm level) before the damped settling: auto (when ratio > 1), on, or off.
     #[arg(long, default_value_t = d().packing)]
     pub packing: Packing,
+    /// An air layer of this height above the calm level, as a multiple of D, up to its own free surface: the
+    /// multi-fluid δ-SPH of Hammani et al. (`sph::multi_fluid`), air at the fine spacing. Default: none, one
+    /// phase (the thesis's 2D+t). The layer need be no deeper than the jet rises (H_pj, about 0.5–0.9 D):
+    /// air matters once the jet traps it, and the air's sound speed (eq. 23: the water's stiffness, 14 c0 at
+    /// a density ratio of 1000) makes the time step about 14 times smaller (docs/reference/twodt.md, "Air").
+    #[arg(long, value_name = "H_OVER_D")]
+    pub air: Option<f64>,
+    /// Density of the air layer / that of the water (default 0.001, the ratio Hammani et al. and Grenier et al.
+    /// use for air and water; at 15 °C it is 0.00123). Read only with `--air`.
+    #[arg(long, value_name = "RATIO", default_value_t = d().air_density)]
+    pub air_density: f64,
     /// Write VTK frames (.vtp + .pvd for ParaView) at every output.
     #[arg(long)]
     pub vtk: bool,
@@ -321,6 +333,8 @@ impl Default for TwoDtConfig {
             exact_kernel: false,
             cfl: None,
             packing: Packing::Auto,
+            air: None,
+            air_density: 1e-3,
             vtk: false,
             frames: false,
         }
@@ -345,6 +359,8 @@ pub enum ConfigOption {
     GiveUpAt,
     PlungeDepth,
     PlungeCirculation,
+    Air,
+    AirDensity,
 }
 
 impl ConfigOption {
@@ -366,6 +382,8 @@ impl ConfigOption {
             ConfigOption::GiveUpAt => "give_up_at",
             ConfigOption::PlungeDepth => "plunge_depth",
             ConfigOption::PlungeCirculation => "plunge_circulation",
+            ConfigOption::Air => "air",
+            ConfigOption::AirDensity => "air_density",
         }
     }
 
@@ -387,6 +405,8 @@ impl ConfigOption {
             ConfigOption::GiveUpAt => "give-up point x/L",
             ConfigOption::PlungeDepth => "plunge depth",
             ConfigOption::PlungeCirculation => "plunge circulation Γ/(UD)",
+            ConfigOption::Air => "air layer height / D",
+            ConfigOption::AirDensity => "air density / water density",
         }
     }
 }
@@ -464,6 +484,16 @@ impl TwoDtConfig {
         }
         if let Some(g) = self.plunge_circulation.threshold().filter(|g| !g.is_finite()) {
             return fail(O::PlungeCirculation, "`off` or a number", &g);
+        }
+        // Thinner than a few spacings it holds no air worth the name, but the spacing is the scene's: the
+        // layer's particle count is checked there.
+        if let Some(a) = self.air.filter(|&a| !(positive(a) && a <= 10.0)) {
+            return fail(O::Air, "in (0, 10]", &a);
+        }
+        // A light phase: lighter than half the water (the equal-stiffness sound speed of eq. 23 grows as
+        // 1/√ratio, and 1e-4 already makes the step 45 times smaller than one phase's).
+        if !(self.air_density >= 1e-4 && self.air_density <= 0.5) {
+            return fail(O::AirDensity, "in [1e-4, 0.5]", &self.air_density);
         }
         Ok(())
     }

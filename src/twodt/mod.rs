@@ -4,6 +4,7 @@
 pub mod checkpoint;
 pub mod config;
 pub mod lattice;
+pub mod lid;
 mod passage;
 pub mod pictures;
 pub mod profile;

@@ -14,7 +14,7 @@ pub(crate) fn bow_tables(scene: &Scene, s: &Snapshot) -> (Table, Table) {
     let mut parts = Table::new(vec!["y_over_l".into(), "z_over_l".into(), "mark".into()]);
     for (k, p) in s.pos.iter().enumerate() {
         if p.x < 2.0 * g.beam && p.y > -g.draft {
-            let id = scene.sim.fluid.id[k] as usize;
+            let id = scene.sim.fluid.id[s.index[k]] as usize;
             let mark = match scene.initial_row[id] {
                 0 => 1.0,
                 1 => 0.75,
@@ -49,12 +49,23 @@ fn plot_points(scene: &Scene, s: &Snapshot) -> (PlotPoints, PlotPoints) {
 pub(crate) fn write_frame(scene: &Scene, s: &Snapshot, path: &Path) -> anyhow::Result<()> {
     let f = &scene.sim.fluid;
     let pts: Vec<[f64; 3]> = f.pos.iter().map(|p| [p.x, p.y, 0.0]).collect();
-    let data = vec![
+    // The snapshot's free surface is the water's: the air (with `--air`) is never on it.
+    let mut on_surface = vec![0.0; f.len()];
+    for (k, &i) in s.index.iter().enumerate() {
+        on_surface[i] = s.on_surface[k] as u8 as f64;
+    }
+    let mut data = vec![
         vtk::PointData::Scalar("pressure", scene.sim.pressure().to_vec()),
         vtk::PointData::Scalar("initial_depth", f.tag.clone()),
-        vtk::PointData::Scalar("free_surface", s.on_surface.iter().map(|b| *b as u8 as f64).collect()),
+        vtk::PointData::Scalar("free_surface", on_surface),
         vtk::PointData::Vector("velocity", f.vel.iter().map(|v| [v.x, v.y, 0.0]).collect()),
     ];
+    if scene.sim.cfg.multi_fluid.is_some() {
+        data.push(vtk::PointData::Scalar(
+            "phase",
+            f.phase.iter().map(|&k| k as f64).collect(),
+        ));
+    }
     vtk::write_vtp(path, &pts, &data)?;
     Ok(())
 }
@@ -65,7 +76,8 @@ pub(crate) fn plunge_plots(scene: &Scene, s: &Snapshot, c: &cavity::Cavity, dir:
     let span = (c.hi.x - 0.0).max(g.draft) * 1.3;
     let range = (0.0, span, -0.6 * g.draft, (c.hi.y + 1.2 * g.draft).min(g.z_top));
     let (pts, wall) = plot_points(scene, s);
-    let p: Vec<f64> = scene.sim.pressure().iter().map(|p| p / g.draft).collect();
+    let pressure = scene.sim.pressure();
+    let p: Vec<f64> = s.index.iter().map(|&i| pressure[i] / g.draft).collect();
     plot::scatter_plot(
         &dir.join("plunge_pressure.png"),
         "pressure p/(ρ g D) at the plunge",
@@ -98,12 +110,14 @@ pub(crate) fn depth_plot(
     let g = &scene.geom;
     let (pts, wall) = plot_points(scene, s);
     let ids = &scene.sim.fluid.id;
-    let marks: Vec<f64> = ids
+    let marks: Vec<f64> = s
+        .index
         .iter()
-        .map(|&id| match scene.initial_row[id as usize] {
+        .map(|&i| ids[i] as usize)
+        .map(|id| match scene.initial_row[id] {
             0 => 1.0,
             1 => 0.75,
-            _ => (scene.initial_depth[id as usize] / g.draft).min(0.5),
+            _ => (scene.initial_depth[id] / g.draft).min(0.5),
         })
         .collect();
     plot::scatter_plot(

@@ -35,11 +35,18 @@ pub fn print(r: &TwoDtResult, out: &Path) {
                 p.alpha_g_deg,
                 p.alpha_vg_deg
             );
-            println!(
-                "  air: the jet closes its cavity at the plunge, x/L = {:.4}; what the run shows after it (the cavity's \
-                 collapse, the splash-up) is single phase, without the trapped air",
-                p.x_plunge_over_l
-            );
+            match r.air_over_d {
+                None => println!(
+                    "  air: the jet closes its cavity at the plunge, x/L = {:.4}; what the run shows after it (the \
+                     cavity's collapse, the splash-up) is single phase, without the trapped air",
+                    p.x_plunge_over_l
+                ),
+                Some(a) => println!(
+                    "  air: modelled ({a} D above the calm level); the jet closes its cavity at the plunge, x/L = \
+                     {:.4}, and the air it traps cannot escape sideways as in 3D (an upper bound of its cushioning)",
+                    p.x_plunge_over_l
+                ),
+            }
             if let Some(t) = crate::reference::published_jet(&r.hull, r.fr) {
                 println!(
                     "  thesis Table 10.1 ({} Fr {}): dx/L = {:.2e}, x_plunge/L = {}, y_plunge/L = {}, H_pj/D = {}",

@@ -59,6 +59,9 @@ pub struct TwoDtResult {
     pub plunge: Option<PlungeMetrics>,
     /// Why the run stopped early, if it did.
     pub blowup: Option<String>,
+    /// Height of the air layer / D when air was modelled (`--air`); `None`: one phase.
+    #[serde(default)]
+    pub air_over_d: Option<f64>,
 }
 
 /// The metrics rows as CSV: the fields of [`TwoDtResult`] in order, those of the plunge flattened in place

@@ -134,6 +134,7 @@ pub fn run(hull: Arc<HullSurface>, cfg: &TwoDtConfig, opts: &TwoDtOptions) -> an
         plunged: run.p.plunge.is_some(),
         plunge: run.p.plunge.clone(),
         blowup,
+        air_over_d: cfg.air,
     };
     let (bow_particles, bow_wall) = match run.p.bow.take() {
         Some(b) => b,
@@ -176,7 +177,16 @@ fn start(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, c
     let ke_after_settle = scene.settle()? / (total_mass * g.draft);
     log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
     let (bin, far_from) = eta_bins(&g);
-    let eta0 = eta_profile(&scene.sim.fluid.pos, g.width, bin, g.dx_f);
+    let f = &scene.sim.fluid;
+    // The water's surface (with `--air` the air lies above it).
+    let water: Vec<_> = f
+        .pos
+        .iter()
+        .zip(&f.phase)
+        .filter(|(_, &k)| k == 0)
+        .map(|(p, _)| *p)
+        .collect();
+    let eta0 = eta_profile(&water, g.width, bin, g.dx_f);
     let columns = |c: &[&str]| c.iter().map(|s| s.to_string()).collect();
     let series = Table::new(columns(&[
         "x_over_l",

@@ -1,13 +1,16 @@
 //! The 2D+t scene (thesis §10.1.2, Fig. 10.3), non-dimensional with L, g and ρ0: half domain by symmetry,
 //! the section on the left, a symmetry wall y = 0 below the keel, bottom at depth Z = 2D, a wall at y = W =
-//! 4B, open top; graded resolution at constant h.
+//! 4B, open top (with `--air`, an air layer above the water under a lid that keeps the enclosed area,
+//! `lid.rs`); graded resolution at constant h.
 
 use super::lattice;
+use super::lid::{enclose, Lid};
 use super::profile::SectionProfile;
 use crate::geometry::surface::HullSurface;
 use crate::sph::body_force::BodyForce;
 use crate::sph::boundary::{Boundary, RigidMotion};
 use crate::sph::deforming_wall::DeformingWall;
+use crate::sph::multi_fluid::{equal_stiffness_sound_speed, MultiFluid, Phase};
 use crate::sph::particles::{Fluid, MAX_PARTICLES};
 use crate::sph::polyline_wall::{solid_side, FluidSide, PolylineWall};
 use crate::sph::solver::{Simulation, SolverConfig};
@@ -50,9 +53,17 @@ pub fn expected_max_speed(hull: &HullSurface, fr: f64, x0: f64, x_end: f64, draf
     (RUN_UP_SPEED_FACTOR * wn).max((2.0 * estimated_hpj_over_d(fr) * draft).sqrt())
 }
 
-/// Duration of the damped settling (time units √(L/g)).
+/// How many times longer a scene with air settles: the rows on either side of the interface take about three
+/// acoustic crossings of the depth to find their rest (a still Athena tank, dx/L 4e-3, 1 D of air: E_K/(M g D)
+/// 2.6e-5 when the ship would start after one crossing, 1.3e-5 after three, and 5e-7 0.14 L later against
+/// 4e-6 after one).
+pub const AIR_SETTLE_FACTOR: f64 = 3.0;
+
+/// Duration of the damped settling (time units √(L/g)): `settle` crossings of the depth at c0, three times as
+/// many with air ([`AIR_SETTLE_FACTOR`]).
 pub fn settle_time(cfg: &TwoDtConfig, depth: f64, c0: f64) -> f64 {
-    cfg.settle_crossings * depth / c0
+    let air = if cfg.air.is_some() { AIR_SETTLE_FACTOR } else { 1.0 };
+    air * cfg.settle_crossings * depth / c0
 }
 
 /// Everything fixed once the case is resolved.
@@ -83,7 +94,7 @@ pub struct Scene {
     pub packing: Option<crate::sph::packing::PackingReport>,
 }
 
-/// Factor applied to every velocity after each settling step.
+/// Factor applied to every velocity after each settling step (with air, the same per unit of time).
 pub const SETTLE_DAMPING: f64 = 0.9;
 
 impl Scene {
@@ -98,10 +109,19 @@ impl Scene {
         let t_start = self.profile.t_start;
         let mut ke = kinetic(&self.sim);
         let steps0 = self.sim.steps;
+        // With air the step is c_air/c_water times shorter: the same damping per unit of time, or the
+        // particles, held by a damping that many times stronger, would not reach their rest positions.
+        let damping = match &self.sim.cfg.multi_fluid {
+            None => SETTLE_DAMPING,
+            Some(mf) => {
+                let c_max = mf.phases.iter().map(|p| p.eos.c0).fold(0.0, f64::max);
+                SETTLE_DAMPING.powf(self.sim.cfg.eos.c0 / c_max)
+            }
+        };
         let mut damped = Watch(|sim: &mut Simulation<2>| {
             if sim.steps > steps0 {
                 for v in sim.fluid.vel.iter_mut() {
-                    *v *= SETTLE_DAMPING;
+                    *v *= damping;
                 }
                 if sim.time <= t_start {
                     ke = kinetic(sim);
@@ -170,6 +190,20 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         "Z/D = {} leaves no room below the keel at this resolution; expected a deeper domain",
         cfg.depth_over_draft
     );
+    if let Some(a) = cfg.air {
+        anyhow::ensure!(
+            a * draft <= z_top - 2.0 * support,
+            "--air: an air layer {a} D high reaches above the tank's walls (their top {:.3} D above the calm \
+             level, less two kernel supports); expected at most {:.3}",
+            z_top / draft,
+            (z_top - 2.0 * support) / draft
+        );
+        anyhow::ensure!(
+            a * draft >= 2.0 * dx_f,
+            "--air: an air layer {a} D high holds fewer than two rows at dx/L = {dx_f:e}; expected at least {:.3}",
+            2.0 * dx_f / draft
+        );
+    }
     let geom = SceneGeometry {
         draft,
         beam,
@@ -192,6 +226,10 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         z_top,
         t_start: settle_time(cfg, depth, c0),
     };
+    // The air layer's height (units of L), its top a whole number of spacings above the bottom so that the
+    // far wall's ghosts stay on the fluid's lattice, and its weight on the water, ρ_a g h_air / (ρ_w g L).
+    let air_height = cfg.air.map(|a| ((a * draft + depth) / dx_f).round() * dx_f - depth);
+    let air_weight = air_height.map_or(0.0, |h| cfg.air_density * h);
     let tank = PolylineWall::new(
         "tank",
         vec![
@@ -207,7 +245,15 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     );
     let p0 = profile.at(0.0);
     let pf = profile.clone();
-    let section = DeformingWall::new("section", Box::new(move |t| pf.at(t)), FluidSide::Right, dx_f, support);
+    // With air, one wall: the section up to the lid, the lid, the tank (`lid.rs`).
+    let wall: Box<dyn Fn(f64) -> crate::sph::deforming_wall::Profile + Send + Sync> = match air_height {
+        None => Box::new(move |t| pf.at(t)),
+        Some(h) => {
+            let lid = Lid::new(&profile, width, h);
+            Box::new(move |t| enclose(&pf.at(t), lid.motion(t), width, depth, z_cut - 0.5 * dx_f))
+        }
+    };
+    let section = DeformingWall::new("section", wall, FluidSide::Right, dx_f, support);
 
     // Particles: graded rows, hydrostatic pressure, none inside the section at t = 0.
     let d1 = cfg.fine_depth_over_draft * draft;
@@ -233,22 +279,52 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         .packing
         .applies(cfg.coarse_ratio)
         .then(|| pack_rows(&mut lattice_particles, width, depth, d1, dx_f, h));
+    // Particles inside the section, or closer to it than a quarter spacing, are not created. (A test at half a
+    // spacing removed the whole first column along the symmetry plane whenever the row spacing W/round(W/dx)
+    // fell just below dx, and the water collapsed into the gap as a jet up the plane: regression test
+    // `first_column_along_the_symmetry_plane_is_kept`.)
+    let inside = |p: &V2| {
+        solid_side(&p0.points, FluidSide::Right, p, support).is_some()
+            || (crate::sph::polyline_wall::nearest_point(&p0.points, p) - p).norm() < 0.25 * dx_f
+    };
+    cfg_s.multi_fluid = air_height.map(|_| air_phases(&cfg_s.eos, cfg.air_density));
     for (p, area, row) in lattice_particles {
-        // Particles inside the section, or closer to it than a quarter spacing, are not created. (A test at
-        // half a spacing removed the whole first column along the symmetry plane whenever the row spacing
-        // W/round(W/dx) fell just below dx, and the water collapsed into the gap as a jet up the plane:
-        // regression test `first_column_along_the_symmetry_plane_is_kept`.)
-        let inside = solid_side(&p0.points, FluidSide::Right, &p, support).is_some()
-            || (crate::sph::polyline_wall::nearest_point(&p0.points, &p) - p).norm() < 0.25 * dx_f;
-        if inside {
+        if inside(&p) {
             continue;
         }
-        let rho = cfg_s.eos.density(-p.y);
+        // Hydrostatic, under the air's weight when there is air.
+        let rho = cfg_s.eos.density(-p.y + air_weight);
         fluid.push(p, V2::zeros(), rho, rho * area, -p.y);
         initial_depth.push(-p.y);
         initial_row.push(row);
     }
-    let boundaries: Vec<Box<dyn Boundary<2>>> = vec![Box::new(tank), Box::new(section)];
+    if let (Some(h_air), Some(mf)) = (air_height, &cfg_s.multi_fluid) {
+        let air_eos = *mf.eos(AIR);
+        // The rows of a uniform layer of height h_air, turned upside down: from half a spacing above the calm
+        // level to half a spacing below the air's free surface.
+        let rows = lattice::rows(h_air, width, dx_f, dx_f, h_air, h_air);
+        for (q, area, _) in lattice::particles(&rows, width) {
+            let p = V2::new(q.x, -q.y);
+            if inside(&p) {
+                continue;
+            }
+            let rho = air_eos.density(air_eos.rho0 * (h_air - p.y));
+            fluid.push(p, V2::zeros(), rho, rho * area, -p.y);
+            *fluid.phase.last_mut().expect("just pushed") = AIR;
+            initial_depth.push(-p.y);
+            // Not a row of the water (pictures mark the water's top two rows).
+            initial_row.push(usize::MAX);
+        }
+    }
+    let boundaries: Vec<Box<dyn Boundary<2>>> = match cfg_s.multi_fluid.as_mut() {
+        None => vec![Box::new(tank), Box::new(section)],
+        Some(mf) => {
+            // Closed by the lid, with Hammani et al.'s background pressure: a tenth of the largest
+            // hydrostatic pressure (their §III.A).
+            mf.background_pressure = BACKGROUND_PRESSURE_FRACTION * (depth + air_weight);
+            vec![Box::new(section)]
+        }
+    };
     let sim = Simulation::new(cfg_s, fluid, boundaries);
     Ok(Scene {
         geom,
@@ -258,6 +334,54 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
         initial_row,
         packing,
     })
+}
+
+/// The phase index of the air in a 2D+t scene with air (the water is phase 0).
+pub const AIR: u8 = 1;
+
+/// The background pressure of a scene with air, as a fraction of the largest hydrostatic pressure ρ_w g Z
+/// (plus the air's weight): Hammani et al.'s 0.1 (§III.A).
+pub const BACKGROUND_PRESSURE_FRACTION: f64 = 0.1;
+
+/// Tait exponent of the air (Hammani et al. eq. 23; Grenier et al. §4.2).
+pub const AIR_GAMMA: f64 = 1.4;
+
+/// The water (the single-phase state equation, unchanged) and the air above it (`density_ratio` ρ_a/ρ_w, Tait
+/// with γ 1.4), for the multi-fluid δ-SPH of Hammani et al. The air's sound speed is their eq. 23 for Tait
+/// water (γ_w 7): c_a = c_w √(γ_a ρ_w / (γ_w ρ_a)), 14.1 c_w at a ratio of 1000, whichever law the water
+/// uses, so that the air's bulk modulus ρ_a c_a² is a fifth of the water's as in their pair (with the linear
+/// water law the literal rule would give 37 c_w and a step 2.6 times smaller still). No background pressure yet:
+/// [`build`] sets it once the lid closes the tank (`lid.rs`).
+pub fn air_phases(water: &crate::sph::eos::Eos, density_ratio: f64) -> MultiFluid {
+    use crate::sph::eos::{Eos, EosKind, TAIT_GAMMA_WATER};
+    let tait_water = Eos {
+        kind: EosKind::Tait,
+        gamma: TAIT_GAMMA_WATER,
+        ..*water
+    };
+    let mut air = Eos {
+        kind: EosKind::Tait,
+        rho0: water.rho0 * density_ratio,
+        c0: 0.0,
+        gamma: AIR_GAMMA,
+    };
+    air.c0 = equal_stiffness_sound_speed(&tait_water, &air);
+    MultiFluid {
+        phases: vec![
+            Phase {
+                name: "water".into(),
+                eos: *water,
+            },
+            Phase {
+                name: "air".into(),
+                eos: air,
+            },
+        ],
+        background_pressure: 0.0,
+        interface_repulsion: 0.0,
+        diffusion: Default::default(),
+        density: Default::default(),
+    }
 }
 
 /// Fraction of the fine layer, from the calm level down, whose rows the packing holds in place. Measured on
