@@ -300,6 +300,10 @@ pub struct TwoDtConfig {
     /// use for air and water; at 15 °C it is 0.00123). Read only with `--air`.
     #[arg(long, value_name = "RATIO", default_value_t = d().air_density)]
     pub air_density: f64,
+    /// With `--air`: the background pressure of the multi-fluid model (Hammani et al. eq. 10), as a fraction
+    /// of the largest hydrostatic pressure ρ_w g Z (their §III.A: 0.1). Read only with `--air`.
+    #[arg(long, value_name = "FRACTION", default_value_t = d().air_background)]
+    pub air_background: f64,
     /// Write VTK frames (.vtp + .pvd for ParaView) at every output.
     #[arg(long)]
     pub vtk: bool,
@@ -335,6 +339,7 @@ impl Default for TwoDtConfig {
             packing: Packing::Auto,
             air: None,
             air_density: 1e-3,
+            air_background: 0.1,
             vtk: false,
             frames: false,
         }
@@ -361,6 +366,7 @@ pub enum ConfigOption {
     PlungeCirculation,
     Air,
     AirDensity,
+    AirBackground,
 }
 
 impl ConfigOption {
@@ -384,6 +390,7 @@ impl ConfigOption {
             ConfigOption::PlungeCirculation => "plunge_circulation",
             ConfigOption::Air => "air",
             ConfigOption::AirDensity => "air_density",
+            ConfigOption::AirBackground => "air_background",
         }
     }
 
@@ -407,6 +414,7 @@ impl ConfigOption {
             ConfigOption::PlungeCirculation => "plunge circulation Γ/(UD)",
             ConfigOption::Air => "air layer height / D",
             ConfigOption::AirDensity => "air density / water density",
+            ConfigOption::AirBackground => "background pressure / ρ_w g Z",
         }
     }
 }
@@ -494,6 +502,9 @@ impl TwoDtConfig {
         // 1/√ratio, and 1e-4 already makes the step 45 times smaller than one phase's).
         if !(self.air_density >= 1e-4 && self.air_density <= 0.5) {
             return fail(O::AirDensity, "in [1e-4, 0.5]", &self.air_density);
+        }
+        if !(self.air_background >= 0.0 && self.air_background <= 10.0) {
+            return fail(O::AirBackground, "in [0, 10]", &self.air_background);
         }
         Ok(())
     }

@@ -115,26 +115,42 @@ pub fn enclose(section: &Profile, lid: (f64, f64, f64), width: f64, depth: f64, 
         push(p[k], m.vel[k], m.acc[k]);
         k += 1;
     }
-    // Where the section meets the lid: a point of the section, moving as the section does there.
-    let corner = match k {
-        0 => V2::new(0.0, z),
-        k if k == p.len() => V2::new(p[k - 1].x, z),
+    // Where the section meets the lid: a point of the section whose motion has the section's normal
+    // component along the section and the lid's along the lid (the ghosts of each side interpolate the
+    // vertex's motion, and free slip reads its normal part: with the section's whole velocity the lid's
+    // ghosts took its normal part, up to 1.7 √(gL) down at Athena's raked stem, across the whole lid).
+    let (v_lid, a_lid) = (V2::new(0.0, vz), V2::new(0.0, az));
+    match k {
+        0 => push(V2::new(0.0, z), v_lid, a_lid),
+        k if k == p.len() => push(V2::new(p[k - 1].x, z), v_lid, a_lid),
         k => {
             let s = (z - p[k - 1].y) / (p[k].y - p[k - 1].y);
             let at = |v: &[V2]| v[k - 1] + (v[k] - v[k - 1]) * s;
-            push(at(p), at(&m.vel), at(&m.acc));
-            at(p)
+            let tangent = p[k] - p[k - 1];
+            let normal = V2::new(-tangent.y, tangent.x).normalize();
+            push(
+                at(p),
+                corner_motion(&normal, &at(&m.vel), vz),
+                corner_motion(&normal, &at(&m.acc), az),
+            );
         }
-    };
-    if k == 0 || k == p.len() {
-        push(corner, V2::zeros(), V2::zeros());
     }
-    let (v_lid, a_lid) = (V2::new(0.0, vz), V2::new(0.0, az));
     push(V2::new(width, z), v_lid, a_lid);
     push(V2::new(width, -depth), V2::zeros(), V2::zeros());
     push(V2::new(0.0, -depth), V2::zeros(), V2::zeros());
     push(V2::new(0.0, tank_end), V2::zeros(), V2::zeros());
     out
+}
+
+/// The vector whose component along the section's unit `normal` is that of `section` and whose vertical
+/// component is `lid`: the motion of the corner where the section meets the lid. Where the section runs
+/// nearly horizontal at the lid (within 6° of it), the two conditions nearly coincide and the section's
+/// motion is kept.
+fn corner_motion(normal: &V2, section: &V2, lid: f64) -> V2 {
+    if normal.x.abs() < 0.1 {
+        return *section;
+    }
+    V2::new((section.dot(normal) - lid * normal.y) / normal.x, lid)
 }
 
 #[cfg(test)]
@@ -173,9 +189,16 @@ mod tests {
         for (p, q) in w.points.iter().zip(want) {
             assert!((p - V2::new(q.0, q.1)).norm() < 1e-12, "{p:?} against {q:?}");
         }
-        // The corner on the section moves with the section (half-way between its vertices' 1 and 3), the lid's
-        // far end with the lid.
-        assert!((w.motion.vel[2] - V2::new(2.0, 0.0)).norm() < 1e-12);
+        // The corner moves with the section along the section's normal (the section's velocity there is
+        // half-way between its vertices', (2, 0)) and with the lid vertically; the lid's far end with the lid.
+        let tangent = V2::new(0.1, 1.0).normalize();
+        let normal = V2::new(-tangent.y, tangent.x);
+        let corner = w.motion.vel[2];
+        assert!(
+            (corner.dot(&normal) - V2::new(2.0, 0.0).dot(&normal)).abs() < 1e-12,
+            "{corner:?}"
+        );
+        assert!((corner.y - 0.1).abs() < 1e-12, "{corner:?}");
         assert_eq!(w.motion.vel[3], V2::new(0.0, 0.1));
     }
 

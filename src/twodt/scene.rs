@@ -319,9 +319,8 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let boundaries: Vec<Box<dyn Boundary<2>>> = match cfg_s.multi_fluid.as_mut() {
         None => vec![Box::new(tank), Box::new(section)],
         Some(mf) => {
-            // Closed by the lid, with Hammani et al.'s background pressure: a tenth of the largest
-            // hydrostatic pressure (their §III.A).
-            mf.background_pressure = BACKGROUND_PRESSURE_FRACTION * (depth + air_weight);
+            // Closed by the lid, with Hammani et al.'s background pressure (`--air-background`).
+            mf.background_pressure = cfg.air_background * (depth + air_weight);
             vec![Box::new(section)]
         }
     };
@@ -338,10 +337,6 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
 
 /// The phase index of the air in a 2D+t scene with air (the water is phase 0).
 pub const AIR: u8 = 1;
-
-/// The background pressure of a scene with air, as a fraction of the largest hydrostatic pressure ρ_w g Z
-/// (plus the air's weight): Hammani et al.'s 0.1 (§III.A).
-pub const BACKGROUND_PRESSURE_FRACTION: f64 = 0.1;
 
 /// Tait exponent of the air (Hammani et al. eq. 23; Grenier et al. §4.2).
 pub const AIR_GAMMA: f64 = 1.4;
