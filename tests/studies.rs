@@ -341,6 +341,30 @@ fn dry_run_does_not_pack_the_scenes() {
     assert_eq!(est[0].particles, packed.sim.n_fluid());
 }
 
+/// Regression: the dry run priced every case at the water's sound speed, so a case with `air` (whose step the
+/// air's 14 times larger sound speed sets) was estimated at a fourteenth of its steps (964 against the 12 411 a
+/// run took, Athena Fr 0.64, dx/L 2e-3). The estimate now takes the fastest phase's.
+#[test]
+fn dry_run_prices_a_case_with_air_at_the_airs_sound_speed() {
+    let dir = std::env::temp_dir().join("bowwave-study-dry-run-air");
+    let path = write_study(
+        &dir,
+        "dry-air",
+        "froude = [0.5, 0.5]\n[resolution]\ndx = [4e-3, 4e-3]\n[config]\nuntil = 0.1\n[case.2]\nair = 1.0\n",
+    );
+    let study = Study::read(&path).unwrap();
+    let est = runner::dry_run(&study).unwrap();
+    let ratio = est[1].steps / est[0].steps;
+    // The step is c_a/c_w = √(1.4 / (7 × 0.001)) = 14.1 times shorter (docs/reference/twodt.md, "Air"), and the
+    // settling three times as long: 15.1 here, where the settling is a tenth of the run.
+    let c_ratio = 200f64.sqrt();
+    assert!(
+        ratio > 0.99 * c_ratio && ratio < 1.15 * c_ratio,
+        "steps with air / without: {ratio}"
+    );
+    assert!(est[1].particles > est[0].particles);
+}
+
 /// A study whose case is stopped part-way (as by a kill or a batch time limit, after a checkpoint) and run
 /// again ends with the same tables as one that ran through: jets.csv (timing columns aside) and
 /// comparison.csv are identical.

@@ -79,7 +79,7 @@ pub struct Estimate {
 }
 
 /// Builds each case's scene (no time step) to count its particles and estimate its steps (from the
-/// acoustic time-step limit at c0 with a 10 % margin for the flow speed) and its run time at
+/// acoustic time-step limit at the fastest phase's c0 with a 10 % margin for the flow speed) and its run time at
 /// [`REFERENCE_THROUGHPUT`]. A plunge search is estimated to its give-up point, the worst case. The scenes are
 /// built unpacked ([`TwoDtConfig::unpacked`](crate::twodt::scene::TwoDtConfig::unpacked), the same count): at
 /// the published resolutions the packing would cost minutes per case (regression test
@@ -93,7 +93,12 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
             let scene = crate::twodt::scene::build(hull.clone(), &dry_run_config(spec))?;
             let g = &scene.geom;
             let h = scene.sim.kernel.h;
-            let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * g.c0, 1.0);
+            // The fastest sound speed sets the step: with air, the air's (`twodt::scene::air_phases`).
+            let c_max = match &scene.sim.cfg.multi_fluid {
+                None => g.c0,
+                Some(mf) => mf.phases.iter().map(|p| p.eos.c0).fold(g.c0, f64::max),
+            };
+            let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * c_max, 1.0);
             let t = scene.profile.t_at(g.x_end);
             let particles = scene.sim.n_fluid();
             let steps = (t / dt).ceil();

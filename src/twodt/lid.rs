@@ -21,7 +21,7 @@ type V2 = Vector2<f64>;
 /// The section is sampled this many times finer than the run's spacing for the area the lid keeps: the
 /// polygon's area then changes smoothly enough with x for its time derivatives (a resampling at the run's
 /// spacing moves it by about 3e-4 of itself).
-const AREA_SAMPLING: f64 = 10.0;
+pub const AREA_SAMPLING: f64 = 10.0;
 
 /// Area of the solid between the symmetry plane y = 0 and the wall polyline `points` (from the symmetry
 /// plane's lower end up to its top, as [`SectionProfile::at`] draws it) below the height `z`.
