@@ -239,6 +239,14 @@ fn jet_metric_trends_are_not_judged_on_jets_of_a_few_particles() {
     }
     let text = report("jet-guard", "athena", "approximation", "", &records, &[], 2);
     assert!(!text.contains("read x_p, y_p and H_pj only"), "{text}");
+    // Regression: a case with a layer of air (`air`) was reported as single phase too; its row and the note
+    // now say it has air.
+    records[1].result.air_over_d = Some(1.5);
+    let text = report("jet-guard", "athena", "approximation", "", &records, &[], 2);
+    assert!(
+        text.contains("with 1.5 D of air") && text.contains("except those with a layer of air"),
+        "{text}"
+    );
 }
 
 /// Regression: the trends were read over every plunging case in the study file's order, so a finer case at a

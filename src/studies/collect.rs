@@ -246,6 +246,10 @@ pub fn report(
             (None, Some(_)) => "stopped early".to_string(),
             (None, None) => format!("no plunge to x/L {:.3}", r.x_end_over_l),
         };
+        let outcome = match r.air_over_d {
+            Some(a) => format!("{outcome}, with {a} D of air"),
+            None => outcome,
+        };
         let f = |v: Option<f64>| v.map(|v| format!("{v:.3}")).unwrap_or_else(|| "–".into());
         let m = r.plunge.as_ref();
         let _ = writeln!(
@@ -311,11 +315,29 @@ pub fn report(
             );
         }
     }
+    let with_air: Vec<String> = recs
+        .iter()
+        .filter_map(|r| {
+            r.result
+                .air_over_d
+                .map(|a| format!("Fr {} dx/L {:.2e} ({a} D)", r.result.fr, r.result.dx_over_l))
+        })
+        .collect();
+    let air = match with_air.is_empty() {
+        true => "the runs are single phase, so what follows the closure in their outputs (the cavity's collapse, \
+                 the splash-up) is without the trapped air"
+            .to_string(),
+        false => format!(
+            "the runs are single phase except those with a layer of air, {}, where the trapped air cannot \
+             escape sideways as in 3D (`docs/reference/twodt.md`, \"Air\"); in the others what follows the \
+             closure (the cavity's collapse, the splash-up) is without the trapped air",
+            with_air.join(", ")
+        ),
+    };
     let _ = writeln!(
         s,
-        "\nEvery metric is taken at the plunge, when the jet closes its cavity; the runs are single phase, so what \
-         follows the closure in their outputs (the cavity's collapse, the splash-up) is without the trapped air \
-         (`docs/reference/method.md`, \"Several phases\")."
+        "\nEvery metric is taken at the plunge, when the jet closes its cavity; {air} (`docs/reference/method.md`, \
+         \"Several phases\")."
     );
     ship3d_section(&mut s, recs);
     let _ = writeln!(s, "\n## Published trends, checked on our plunging cases\n");
