@@ -367,13 +367,7 @@ fn series_max(dir: &std::path::Path, column: &str) -> (f64, f64) {
 fn still_tank(cfg: &TwoDtConfig, label: &str) -> (f64, f64) {
     let dir = std::env::temp_dir().join(format!("bowwave-still-tank-{label}-{}", std::process::id()));
     let r = run(athena(), cfg, &quiet_options(&dir, false)).expect("still tank");
-    let series = std::fs::read_to_string(dir.join("series.csv")).expect("series");
-    let mut lines = series.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header.iter().position(|c| *c == "ke_over_mgd").unwrap();
-    let ke_max = lines
-        .map(|l| l.split(',').nth(k).unwrap().parse::<f64>().unwrap())
-        .fold(0.0, f64::max);
+    let (ke_max, _) = series_max(&dir, "ke_over_mgd");
     println!(
         "still tank ({label}): max E_K/(M g D) = {ke_max:.2e}, far-field level {:.2e} D",
         r.far_field_eta_over_d

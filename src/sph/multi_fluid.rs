@@ -121,6 +121,11 @@ impl MultiFluid {
         &self.phases[k as usize].eos
     }
 
+    /// The largest sound speed of the phases (m/s): the one that sets the time step.
+    pub fn max_sound_speed(&self) -> f64 {
+        self.phases.iter().map(|p| p.eos.c0).fold(0.0, f64::max)
+    }
+
     /// p = p_χ(ρ) (Pa), without the background pressure.
     #[inline]
     pub fn pressure(&self, k: u8, rho: f64) -> f64 {

@@ -96,7 +96,7 @@ pub fn dry_run(study: &Study) -> anyhow::Result<Vec<Estimate>> {
             // The fastest sound speed sets the step: with air, the air's (`twodt::scene::air_phases`).
             let c_max = match &scene.sim.cfg.multi_fluid {
                 None => g.c0,
-                Some(mf) => mf.phases.iter().map(|p| p.eos.c0).fold(g.c0, f64::max),
+                Some(mf) => mf.max_sound_speed().max(g.c0),
             };
             let dt = crate::sph::equations::timestep::time_step(scene.sim.cfg.cfl, h, 1.1 * c_max, 1.0);
             let t = scene.profile.t_at(g.x_end);

@@ -177,15 +177,8 @@ fn start(hull: &Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<(Scene, c
     let ke_after_settle = scene.settle()? / (total_mass * g.draft);
     log::info!("settled: E_K/(M g D) = {ke_after_settle:.3e}");
     let (bin, far_from) = eta_bins(&g);
-    let f = &scene.sim.fluid;
     // The water's surface (with `--air` the air lies above it).
-    let water: Vec<_> = f
-        .pos
-        .iter()
-        .zip(&f.phase)
-        .filter(|(_, &k)| k == 0)
-        .map(|(p, _)| *p)
-        .collect();
+    let water = scene.sim.fluid.phase_subset(0).pos;
     let eta0 = eta_profile(&water, g.width, bin, g.dx_f);
     let columns = |c: &[&str]| c.iter().map(|s| s.to_string()).collect();
     let series = Table::new(columns(&[

@@ -113,10 +113,7 @@ impl Scene {
         // particles, held by a damping that many times stronger, would not reach their rest positions.
         let damping = match &self.sim.cfg.multi_fluid {
             None => SETTLE_DAMPING,
-            Some(mf) => {
-                let c_max = mf.phases.iter().map(|p| p.eos.c0).fold(0.0, f64::max);
-                SETTLE_DAMPING.powf(self.sim.cfg.eos.c0 / c_max)
-            }
+            Some(mf) => SETTLE_DAMPING.powf(self.sim.cfg.eos.c0 / mf.max_sound_speed()),
         };
         let mut damped = Watch(|sim: &mut Simulation<2>| {
             if sim.steps > steps0 {
