@@ -113,6 +113,7 @@ class TwoDt(Application):
 
     def configure_scheme(self):
         dt = 0.125 * self.h / self.c0
+        self.dt_fixed = dt
         t_end = (self.options.x_end - self.x0) / self.fr
         pfreq = max(1, int(round(self.options.every / self.fr / dt)))
         self.scheme.configure(h=self.h, c0=self.c0)
@@ -193,7 +194,16 @@ class TwoDt(Application):
         self.place_hull(0.0)
         return [fluid, walls, hull]
 
+    def pre_step(self, solver):
+        if self.options.restart_file is not None and not getattr(self, '_resumed', False):
+            # PySPH resumes with the saved run's last step, which its end shortened to land on its tf.
+            solver.dt = self.dt_fixed
+            self._resumed = True
+
     def post_step(self, solver):
+        if not hasattr(self, '_hull'):
+            # A run resumed with --restart-file loads its arrays instead of creating them.
+            self._hull = next(pa for pa in self.particles if pa.name == 'hull')
         self.place_hull(solver.t)
 
 
