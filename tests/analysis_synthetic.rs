@@ -378,3 +378,107 @@ fn water_under_air_has_its_free_surface_where_the_air_begins() {
     let snap = Snapshot::from_simulation(&mut sim, dx);
     assert_eq!(snap.len(), n_water);
 }
+
+/// Writes a frame series in the format of `bowwave frames` (`twodt::external_frames`): frames.csv and one
+/// CSV of water particles per frame.
+fn write_frames(dir: &std::path::Path, frames: &[(f64, Vec<V2>, Vec<V2>, f64)]) {
+    std::fs::create_dir_all(dir).unwrap();
+    let mut index = String::from("x_over_l,file\n");
+    for (k, (x, pos, vel, vol)) in frames.iter().enumerate() {
+        let name = format!("f{k}.csv");
+        index.push_str(&format!("{x},{name}\n"));
+        let mut body = String::from("y,z,u,v,volume\n");
+        for (p, u) in pos.iter().zip(vel) {
+            body.push_str(&format!("{:e},{:e},{:e},{:e},{:e}\n", p.x, p.y, u.x, u.y, vol));
+        }
+        std::fs::write(dir.join(name), body).unwrap();
+    }
+    std::fs::write(dir.join("frames.csv"), index).unwrap();
+}
+
+/// Another code's frames measured by bowwave's criteria: the rectangular overturned wave beside a Wigley
+/// hull (D = 0.1 L, dx = D/20) in two frames, its tip hanging 0.3 D above the pool at x/L 0.05 (the air
+/// under the slab open to the atmosphere) and standing in the pool at 0.06 (the cavity closed), the water
+/// turning clockwise around the cavity. The plunge is the second frame, at the impact point of the tip's
+/// face, with the slab's crest and jet; a cavity that was never open (the second frame alone) is no plunge.
+#[test]
+fn another_codes_frames_plunge_where_the_cavity_first_closes() {
+    use bowwave::geometry::{surface::HullSurface, wigley};
+    use bowwave::twodt::external_frames::{measure, FramesSpec};
+    let spec_w = wigley::WigleySpec::default();
+    let hull = std::sync::Arc::new(HullSurface::new(&wigley::wigley(&spec_w)));
+    let dx = 0.005;
+    let (y0, y1, z0, z1) = (0.35, 0.6, 0.08, 0.12);
+    let frame = |x: f64, tip_foot: f64| {
+        let wave = |p: &V2| {
+            let hull_side = p.x > wigley::half_breadth(&spec_w, x, p.y) + dx;
+            let pool = p.y < 0.0 && hull_side;
+            let face = p.x > 0.25 && p.x < y0 && p.y < z1;
+            let slab = p.x >= y0 && p.x <= y1 && p.y > z0 && p.y < z1;
+            let tip = p.x > y1 && p.x < 0.65 && p.y > tip_foot && p.y < z1;
+            pool || face || slab || tip
+        };
+        let pos = lattice(dx, V2::new(0.0, -0.2), V2::new(0.8, z1), wave);
+        let centre = V2::new(0.5 * (y0 + y1), 0.5 * z0);
+        let vel = pos.iter().map(|p| V2::new(p.y - centre.y, -(p.x - centre.x))).collect();
+        (x, pos, vel, dx * dx)
+    };
+    let spec = FramesSpec {
+        fr: 0.5,
+        dx,
+        width_over_beam: 4.0,
+        depth_over_draft: 2.0,
+        plunge_depth: None,
+        plunge_circulation: Some(0.02),
+    };
+    let dir = std::env::temp_dir().join(format!("bowwave-frames-{}", std::process::id()));
+    write_frames(&dir, &[frame(0.05, 0.03), frame(0.06, -1.0)]);
+    let r = measure(hull.clone(), &spec, &dir).expect("frames measured");
+    assert_eq!(r.crest.rows.len(), 2);
+    let p = r.plunge.expect("the closed cavity is a plunge");
+    assert_eq!(p.x_plunge_over_l, 0.06);
+    assert!(
+        (p.y_plunge_over_l - y1).abs() < 2.0 * dx,
+        "impact y {}",
+        p.y_plunge_over_l
+    );
+    // The crest: the slab's top row at z1 − dx/2, plus dx/2; D = 0.1.
+    assert!((p.h_pj_over_d - z1 / 0.1).abs() < 1e-9, "H_pj/D {}", p.h_pj_over_d);
+    assert!((r.crest.rows[1][1] - z1 / 0.1).abs() < 1e-9);
+    assert!(p.gamma_over_ud > 0.02, "Γ/(UD) {}", p.gamma_over_ud);
+    let slab = ((y1 - y0) / dx) * ((z1 - z0) / dx);
+    assert!(
+        (p.jet_particles as f64 / slab - 1.0).abs() < 0.1,
+        "jet of {} particles",
+        p.jet_particles
+    );
+    // The closed frame alone: nothing was open before it, so nothing closed.
+    let alone = dir.join("alone");
+    write_frames(&alone, &[frame(0.06, -1.0)]);
+    assert!(measure(hull, &spec, &alone).unwrap().plunge.is_none());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Bad frames are refused with the file and the field named, never a panic.
+#[test]
+fn bad_frames_name_the_file_and_the_field() {
+    use bowwave::twodt::external_frames::{read_frame, read_index};
+    let dir = std::env::temp_dir().join(format!("bowwave-bad-frames-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("frames.csv"), "x_over_l,name\n0.1,a.csv\n").unwrap();
+    let e = read_index(&dir).unwrap_err().to_string();
+    assert!(e.contains("frames.csv") && e.contains("`file`"), "{e}");
+    std::fs::write(dir.join("frames.csv"), "x_over_l,file\nabc,a.csv\n").unwrap();
+    let e = read_index(&dir).unwrap_err().to_string();
+    assert!(e.contains("frames.csv") && e.contains("x_over_l (row 1)"), "{e}");
+    std::fs::write(dir.join("a.csv"), "y,z,u,v\n0.1,0.0,0.0,0.0\n").unwrap();
+    let e = read_frame(&dir.join("a.csv")).unwrap_err().to_string();
+    assert!(e.contains("a.csv") && e.contains("`volume`"), "{e}");
+    std::fs::write(dir.join("a.csv"), "y,z,u,v,volume\n0.1,0.0,0.0,0.0,-1\n").unwrap();
+    let e = read_frame(&dir.join("a.csv")).unwrap_err().to_string();
+    assert!(e.contains("a.csv") && e.contains("volume (row 1)"), "{e}");
+    std::fs::write(dir.join("a.csv"), "y,z,u,v,volume\n0.1,x,0.0,0.0,1\n").unwrap();
+    let e = read_frame(&dir.join("a.csv")).unwrap_err().to_string();
+    assert!(e.contains("a.csv") && e.contains("row 1") && e.contains("`z`"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -3,6 +3,7 @@
 
 pub mod checkpoint;
 pub mod config;
+pub mod external_frames;
 pub mod lattice;
 pub mod lid;
 mod passage;

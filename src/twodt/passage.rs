@@ -175,9 +175,8 @@ impl Observer<TwoDtRun> for Detector<'_> {
             let far = (mean_finite(&eta[far_from..]) - p.far_ref).abs();
             p.far_eta = p.far_eta.max(far / g.draft);
             let found = plunge_check(
-                &run.scene,
+                &PlungeScene::of(&run.scene),
                 &s,
-                run.scene.sim.time,
                 (self.cfg.plunge_depth, self.cfg.plunge_circulation.threshold()),
                 &mut run.p.closure_watch,
                 now.searching,
@@ -285,27 +284,62 @@ pub(crate) fn snapshot(scene: &mut Scene) -> Snapshot {
     Snapshot::from_simulation(&mut scene.sim, scene.geom.dx_f)
 }
 
-/// Looks for a closed air cavity at the bow wave; returns the metrics and the cavity if the wave has plunged.
-fn plunge_check(
-    scene: &Scene,
+/// What the plunge criteria read of a 2D+t scene at one instant (units of L, speeds in √(gL)): the tank and the
+/// section, whatever code moved the water ([`super::external_frames`] fills it from another code's frames).
+pub(crate) struct PlungeScene {
+    pub draft: f64,
+    pub beam: f64,
+    /// The tank's half width W and depth Z.
+    pub width: f64,
+    pub depth: f64,
+    /// The finest particle spacing (the level set's grid).
+    pub dx: f64,
+    /// The wall at this instant (symmetry plane and section, [`super::profile::SectionProfile::at`]).
+    pub walls: Vec<V2>,
+    /// Ship speed U.
+    pub u: f64,
+    /// x/L of the section, and of the bow (the hull's first section).
+    pub x: f64,
+    pub x_bow: f64,
+}
+
+impl PlungeScene {
+    pub fn of(scene: &Scene) -> Self {
+        let (g, t) = (&scene.geom, scene.sim.time);
+        PlungeScene {
+            draft: g.draft,
+            beam: g.beam,
+            width: g.width,
+            depth: g.depth,
+            dx: g.dx_f,
+            walls: scene.profile.at(t).points,
+            u: scene.profile.u,
+            x: scene.profile.x_at(t),
+            x_bow: scene.profile.hull.x_range.0,
+        }
+    }
+}
+
+/// Looks for a closed air cavity at the bow wave; returns the metrics and the cavity if the wave has plunged
+/// (`docs/reference/jet-metrics.md`, the plunge criteria).
+pub(crate) fn plunge_check(
+    g: &PlungeScene,
     s: &Snapshot,
-    t: f64,
     (plunge_depth, plunge_circulation): (Option<f64>, Option<f64>),
     watch: &mut cavity::ClosureWatch,
     between_checks: bool,
 ) -> Option<(PlungeMetrics, cavity::Cavity)> {
-    let g = &scene.geom;
     let h = s.h;
     let zmax = s.pos.iter().map(|p| p.y).fold(f64::NEG_INFINITY, f64::max);
     let lo = V2::new(0.0, -0.5 * g.draft);
     let hi = V2::new(g.width, zmax + 3.0 * h);
-    let ls = level_set::level_set(s, lo, hi, g.dx_f);
-    let walls = scene.profile.at(t).points;
+    let ls = level_set::level_set(s, lo, hi, g.dx);
+    let walls = &g.walls;
     let margin = 3.0 * h;
     let keep = |nodes: &[V2]| {
-        nodes.iter().all(|p| {
-            (nearest_point(&walls, p) - p).norm() > margin && p.x < g.width - margin && p.y > -g.depth + margin
-        })
+        nodes
+            .iter()
+            .all(|p| (nearest_point(walls, p) - p).norm() > margin && p.x < g.width - margin && p.y > -g.depth + margin)
     };
     let closed = if between_checks {
         watch.closed_since_previous(&ls, (2.0 * h).powi(2), keep)?
@@ -319,9 +353,9 @@ fn plunge_check(
             .filter(|&k| s.on_surface[k] && s.pos[k].x >= y_from && s.pos[k].x <= c.hi.x)
             .map(|k| s.pos[k].y)
             .fold(f64::NEG_INFINITY, f64::max)
-            + 0.5 * g.dx_f
+            + 0.5 * g.dx
     };
-    let u = scene.profile.u;
+    let u = g.u;
     // Criterion 3 (optional): a plunge closes the cavity against the free surface in front of the wave, so
     // the cavity reaches down into the lower part of the wave. Criterion 5: the jet closing it turns
     // clockwise around it; a sliver of air between particle rows of a sheet has no such circulation.
@@ -337,11 +371,11 @@ fn plunge_check(
     })?;
     let idx = jet::jet_particles(s, &ls, &c);
     let m = jet::metrics(s, &ls, &idx)?;
-    let x = scene.profile.x_at(t);
+    let x = g.x;
     let pm = PlungeMetrics {
         x_plunge_over_l: x,
         y_plunge_over_l: c.rightmost.x,
-        fr_x: u / (x - scene.profile.hull.x_range.0).max(1e-12).sqrt(),
+        fr_x: u / (x - g.x_bow).max(1e-12).sqrt(),
         h_pj_over_d: crest / g.draft,
         fall_over_d: (crest - c.rightmost.y) / g.draft,
         gamma_over_ud: gamma / (u * g.draft),
@@ -405,7 +439,7 @@ pub(crate) fn eta_profile(pos: &[V2], width: f64, bin: f64, dx: f64) -> Vec<f64>
 
 /// The half-breadth of a section polyline at the calm level z = 0: the largest y where it crosses z = 0
 /// (0 if it does not reach the water).
-fn waterline_half_breadth(points: &[V2]) -> f64 {
+pub(crate) fn waterline_half_breadth(points: &[V2]) -> f64 {
     points
         .windows(2)
         .filter(|w| (w[0].y <= 0.0) != (w[1].y <= 0.0))

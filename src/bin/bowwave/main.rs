@@ -7,6 +7,7 @@ mod bent_wall;
 mod case;
 mod chart;
 mod converge;
+mod frames;
 mod hull;
 mod options;
 mod ship;
@@ -55,6 +56,9 @@ enum Command {
     /// The wedge check of the 2D+t machinery: a hull of wedge sections sinking linearly in x against a rigid
     /// wedge entering at the same speed, both against Wagner theory; prints pile-up height and force.
     Wedge(twodt::WedgeArgs),
+    /// The plunge and the jet measured by bowwave's criteria in 2D+t particle frames written by another code
+    /// (a cross-check on one hull by one measure); writes crest.csv and plunge.json.
+    Frames(frames::FramesArgs),
     /// Measure throughput (particle-steps per second) on the dam break.
     Bench(bench::BenchArgs),
     /// The 3D comparison mode's first case: the dam break in 2D and as a 3D slab between free-slip side
@@ -120,6 +124,7 @@ fn run() -> anyhow::Result<ExitCode> {
         Command::Chart { kind } => done(kind.run()),
         Command::Study(a) => a.run(),
         Command::Wedge(a) => done(a.run()),
+        Command::Frames(a) => done(a.run()),
         Command::Bench(a) => done(a.run()),
         Command::Slab(a) => done(a.run()),
         Command::Ship(a) => a.run(),
