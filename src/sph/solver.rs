@@ -499,8 +499,9 @@ impl<const D: usize> Simulation<D> {
                     let wall_vel = geom.wall_vel[g];
                     if let Some(&j) = g.checked_sub(n_fixed).map(|k| &image_source[k]) {
                         // An image carries its particle's values, mirrored: free slip (7.2) and the Neumann
-                        // condition (7.4) from the particle itself. Its density gradient is its particle's, known
-                        // after stage 4 (`mirror_image_gradients`); here only the Neumann normal part n dρ/dn.
+                        // condition (7.4) from the particle itself. Its density gradient here is the Neumann
+                        // normal part n dρ/dn alone; the particle's tangential part, known after stage 4, is added
+                        // then (`mirror_image_gradients`).
                         let (eos, ghost_phase) = match multi {
                             None => (eos, 0),
                             Some(mf) => (*mf.eos(phase[j]), phase[j]),
@@ -1135,9 +1136,9 @@ impl<const D: usize> GradientPass<'_, D> {
     }
 }
 
-/// Completes each image ghost's density gradient: its particle's renormalised gradient (stage 4) with the normal
-/// part replaced by the Neumann one that [`Simulation::prepare`] left in `grad_rho` (an image of a particle at its
-/// mirror point has the particle's tangential gradient, and along the normal the hydrostatic one of (7.4)).
+/// Completes each image ghost's density gradient: [`Simulation::prepare`] gave it the Neumann normal part of
+/// (7.4); this adds the tangential part of its particle's renormalised gradient (stage 4), as
+/// [`ghost_conditions::neumann_density_gradient`] composes the two for a fixed ghost.
 fn mirror_image_gradients<const D: usize>(gs: &mut GhostState<D>, grad_rho: &[SVector<f64, D>]) {
     let n_fixed = gs.n_fixed;
     for (k, &j) in gs.image_source.iter().enumerate() {
@@ -1145,8 +1146,7 @@ fn mirror_image_gradients<const D: usize>(gs: &mut GhostState<D>, grad_rho: &[SV
         let r_gi = gs.geom.pos[g] - gs.geom.interp[g];
         let dist = r_gi.norm();
         let n = if dist > 0.0 { r_gi / dist } else { SVector::zeros() };
-        let dn = gs.grad_rho[g].dot(&n);
-        gs.grad_rho[g] = ghost_conditions::neumann_density_gradient(&grad_rho[j], &n, dn);
+        gs.grad_rho[g] += ghost_conditions::tangential_part(&grad_rho[j], &n);
     }
 }
 

@@ -112,7 +112,14 @@ pub fn neumann_density_gradient<const D: usize>(
     n: &SVector<f64, D>,
     dn: f64,
 ) -> SVector<f64, D> {
-    grad_i - n * grad_i.dot(n) + n * dn
+    tangential_part(grad_i, n) + n * dn
+}
+
+/// The part of `v` along the wall, normal to the unit `n`: what a ghost keeps of its mirror point's density
+/// gradient ([`neumann_density_gradient`]).
+#[inline]
+pub fn tangential_part<const D: usize>(v: &SVector<f64, D>, n: &SVector<f64, D>) -> SVector<f64, D> {
+    v - n * v.dot(n)
 }
 
 #[cfg(test)]
