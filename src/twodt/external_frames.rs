@@ -66,7 +66,16 @@ pub struct FramesResult {
     /// the highest water particle in bins of 4 dx, plus dx/2), water particles.
     pub crest: Table,
     pub plunge: Option<PlungeMetrics>,
+    /// The largest step in x/L between two frames, in units of dx/L. A bowwave run compares checks about two
+    /// spacings apart; frames much farther apart than that can miss a plunge (see [`FRAME_GAP_WARNING`]).
+    pub max_gap_over_dx: f64,
 }
+
+/// Frames more than this many spacings apart in x/L are reported: the plunge criterion that tells a jet's
+/// trapped air from a hole opening in the water (at least half the new cavity was atmosphere at the
+/// previous frame) fails when the jet moves over the cavity's place between frames; a bowwave run checks
+/// every 10 steps, about 2 spacings (`docs/reference/twodt.md`, "Another code's frames").
+pub const FRAME_GAP_WARNING: f64 = 4.0;
 
 /// The series' frames, sorted by x/L, from its `frames.csv`.
 pub fn read_index(dir: &Path) -> Result<Vec<FrameEntry>, InputError> {
@@ -261,5 +270,13 @@ pub fn measure(hull: Arc<HullSurface>, spec: &FramesSpec, dir: &Path) -> anyhow:
             plunge = plunge_check(&scene, &s, criteria, &mut watch, false).map(|(pm, _)| pm);
         }
     }
-    Ok(FramesResult { crest, plunge })
+    let max_gap = frames
+        .windows(2)
+        .map(|w| w[1].x_over_l - w[0].x_over_l)
+        .fold(0.0, f64::max);
+    Ok(FramesResult {
+        crest,
+        plunge,
+        max_gap_over_dx: max_gap / spec.dx,
+    })
 }

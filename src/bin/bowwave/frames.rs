@@ -3,7 +3,7 @@
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::io::atomic::write_atomic;
 use bowwave::twodt::config::PlungeCirculation;
-use bowwave::twodt::external_frames::{measure, FramesSpec};
+use bowwave::twodt::external_frames::{measure, FramesSpec, FRAME_GAP_WARNING};
 use clap::Args;
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -65,6 +65,13 @@ impl FramesArgs {
             plunge_circulation: self.plunge_circulation.threshold(),
         };
         let r = measure(hull, &spec, &self.dir)?;
+        if r.max_gap_over_dx > FRAME_GAP_WARNING {
+            eprintln!(
+                "warning: frames up to {:.1} dx apart in x/L: a plunge between two of them may be missed (a bowwave \
+                 run checks about every 2 dx; write frames at most {FRAME_GAP_WARNING} dx apart near the plunge)",
+                r.max_gap_over_dx
+            );
+        }
         let out = self.out.unwrap_or_else(|| self.dir.join("bowwave"));
         std::fs::create_dir_all(&out).map_err(|e| anyhow::anyhow!("{}: cannot create: {e}", out.display()))?;
         r.crest.write(&out.join("crest.csv"))?;
