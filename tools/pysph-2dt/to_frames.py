@@ -68,7 +68,9 @@ def main():
         if not lo <= x <= hi:
             continue
         name = f'frame_{k:05d}.csv'
-        np.savetxt(os.path.join(out, name), a, delimiter=',', header='y,z,u,v,volume', comments='', fmt='%.9e')
+        if not os.path.exists(os.path.join(out, name)):  # a frame already written is kept (an added run's tail)
+            np.savetxt(os.path.join(out, name), a, delimiter=',', header='y,z,u,v,volume', comments='',
+                       fmt='%.9e')
         rows.append((x, name))
     with open(os.path.join(out, 'frames.csv'), 'w') as f:
         f.write('x_over_l,file\n')
