@@ -16,7 +16,7 @@
 //! the criteria, the jet's metrics. A bowwave run checks every ten steps and then finds the plunge to one
 //! step; here the plunge is known to one frame interval, the x of the frame where the cavity is first closed.
 
-use super::passage::{eta_profile, plunge_check, waterline_half_breadth, PlungeScene};
+use super::passage::{eta_outside_waterline, eta_profile, plunge_check, waterline_half_breadth, PlungeScene};
 use super::profile::SectionProfile;
 use super::result::PlungeMetrics;
 use crate::analysis::{cavity, Snapshot};
@@ -244,17 +244,14 @@ pub fn measure(hull: Arc<HullSurface>, spec: &FramesSpec, dir: &Path) -> anyhow:
     for fr in &frames {
         let particles = read_frame(&fr.path)?;
         let walls = profile.at(profile.t_at(fr.x_over_l)).points;
-        let s = snapshot(&particles, spec.dx, &[&walls, &tank]);
-        let y_wl = waterline_half_breadth(&walls);
-        let eta = eta_profile(&s.pos, width, bin, spec.dx);
-        let top = eta
-            .iter()
-            .enumerate()
-            .filter(|(k, z)| z.is_finite() && (*k as f64 + 0.5) * bin > y_wl)
+        let eta = eta_profile(&particles.pos, width, bin, spec.dx);
+        let top = eta_outside_waterline(&eta, bin, waterline_half_breadth(&walls))
             .map(|(_, z)| z / draft)
             .fold(f64::NEG_INFINITY, f64::max);
-        crest.push(vec![fr.x_over_l, top, s.len() as f64]);
+        crest.push(vec![fr.x_over_l, top, particles.pos.len() as f64]);
+        // After the plunge the crest alone is read: no free surface to detect.
         if plunge.is_none() {
+            let s = snapshot(&particles, spec.dx, &[&walls, &tank]);
             let scene = PlungeScene {
                 draft,
                 beam,

@@ -237,12 +237,9 @@ impl Observer<TwoDtRun> for Outputs<'_> {
         let y_wl = waterline_half_breadth(&scene.profile.at(scene.sim.time).points);
         let (bin, _) = eta_bins(g);
         p.crest = f64::NEG_INFINITY;
-        for (k, z) in sv.eta.iter().enumerate() {
-            // Bins inside the hull's waterline would show the water under the hull, not a free surface.
-            if z.is_finite() && (k as f64 + 0.5) * bin > y_wl {
-                p.eta_table.push(vec![x, (k as f64 + 0.5) * bin, z / g.draft]);
-                p.crest = p.crest.max(z / g.draft);
-            }
+        for (y, z) in eta_outside_waterline(&sv.eta, bin, y_wl) {
+            p.eta_table.push(vec![x, y, z / g.draft]);
+            p.crest = p.crest.max(z / g.draft);
         }
         if self.cfg.frames {
             let path = self.out_dir.join(format!("frame_{:04}.png", p.series.rows.len()));
@@ -435,6 +432,15 @@ pub(crate) fn eta_profile(pos: &[V2], width: f64, bin: f64, dx: f64) -> Vec<f64>
         }
     }
     top.iter().map(|z| z + 0.5 * dx).collect()
+}
+
+/// The (y, η) of the bins of an [`eta_profile`] (width `bin`) that hold water outside the section's waterline
+/// half-breadth `y_wl`: bins inside it would show the water under the hull, not a free surface.
+pub(crate) fn eta_outside_waterline(eta: &[f64], bin: f64, y_wl: f64) -> impl Iterator<Item = (f64, f64)> + '_ {
+    eta.iter()
+        .enumerate()
+        .map(move |(k, &z)| ((k as f64 + 0.5) * bin, z))
+        .filter(move |&(y, z)| z.is_finite() && y > y_wl)
 }
 
 /// The half-breadth of a section polyline at the calm level z = 0: the largest y where it crosses z = 0
