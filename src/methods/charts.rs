@@ -71,9 +71,15 @@ pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// The code of this project's own chart points; any other `code` is a peer (another code's runs, drawn
+/// beside ours and left out of the Pareto front, which marks the product's options).
+pub const OWN_CODE: &str = "bowwave";
+
 /// One run of the chart.
 #[derive(Clone, Debug)]
 pub struct Point {
+    /// Which code ran it: [`OWN_CODE`], or a peer's name (e.g. "DualSPHysics 5.0").
+    pub code: String,
     pub variant: String,
     pub res: f64,
     pub cpu_seconds: f64,
@@ -136,6 +142,7 @@ pub fn speed_accuracy(
             }
             log::info!("{v} res {r}: error {error:.3e}, CPU {cpu:.1} s");
             points.push(Point {
+                code: OWN_CODE.into(),
                 variant: v.clone(),
                 res: r,
                 cpu_seconds: cpu,
@@ -149,9 +156,10 @@ pub fn speed_accuracy(
     Ok((label, points))
 }
 
-/// Indices of the Pareto front (no other finished run has both less CPU and less error), by CPU.
+/// Indices of the Pareto front among this project's runs (no other finished run of ours has both less CPU and
+/// less error), by CPU. Peers' points are not on it: the front marks the product's own options.
 pub fn pareto_front(points: &[Point]) -> Vec<usize> {
-    let ok = |p: &Point| p.error.is_finite() && p.error > 0.0;
+    let ok = |p: &Point| p.code == OWN_CODE && p.error.is_finite() && p.error > 0.0;
     let mut front: Vec<usize> = (0..points.len())
         .filter(|&i| ok(&points[i]))
         .filter(|&i| {
@@ -176,6 +184,7 @@ pub fn write_speed_accuracy(out: &Path, case: &str, quantity: &str, points: &[Po
     for (i, p) in points.iter().enumerate() {
         w.write_record([
             case.to_string(),
+            p.code.clone(),
             p.variant.clone(),
             p.res.to_string(),
             p.particles.to_string(),
@@ -195,8 +204,9 @@ pub fn write_speed_accuracy(out: &Path, case: &str, quantity: &str, points: &[Po
 }
 
 /// The columns of speed_accuracy.csv.
-const CSV_HEADER: [&str; 10] = [
+const CSV_HEADER: [&str; 11] = [
     "case",
+    "code",
     "variant",
     "res",
     "particles",
@@ -209,7 +219,8 @@ const CSV_HEADER: [&str; 10] = [
 ];
 
 /// Reads a speed_accuracy.csv back: the case label, the quantity label and the points. Files written before
-/// the `quantity` column existed need `quantity` given.
+/// the `quantity` column existed need `quantity` given; rows of files without a `code` column are this
+/// project's ([`OWN_CODE`]).
 pub fn read_speed_accuracy(path: &Path, quantity: Option<&str>) -> anyhow::Result<(String, String, Vec<Point>)> {
     let ctx = |what: String| anyhow::anyhow!("{}: {what}", path.display());
     let mut r = csv::Reader::from_path(path).map_err(|e| ctx(format!("cannot read: {e}")))?;
@@ -232,6 +243,7 @@ pub fn read_speed_accuracy(path: &Path, quantity: Option<&str>) -> anyhow::Resul
         need("stopped")?,
     );
     let kq = col("quantity");
+    let kcode = col("code");
     let (mut case, mut label) = (String::new(), quantity.map(String::from));
     let mut points = vec![];
     for (i, rec) in r.records().enumerate() {
@@ -250,7 +262,18 @@ pub fn read_speed_accuracy(path: &Path, quantity: Option<&str>) -> anyhow::Resul
             label = kq.and_then(|k| rec.get(k)).map(String::from);
         }
         let stopped = field(kx, "stopped")?;
+        let code = match kcode {
+            Some(k) => field(k, "code")?.to_string(),
+            None => OWN_CODE.to_string(),
+        };
+        anyhow::ensure!(
+            !code.is_empty(),
+            "{}: row {}: field `code` is empty; expected a code's name",
+            path.display(),
+            i + 1
+        );
         points.push(Point {
+            code,
             variant: field(kv, "variant")?.to_string(),
             res: num(kr, "res")?,
             particles: num(kp, "particles")? as usize,
@@ -266,18 +289,57 @@ pub fn read_speed_accuracy(path: &Path, quantity: Option<&str>) -> anyhow::Resul
     Ok((case, label, points))
 }
 
-/// Draws the error against CPU seconds, one line per variant, and the Pareto front.
+/// Reads a peers file (a speed_accuracy.csv of other codes' runs): its case, quantity label and points. Every
+/// row must name a code other than this project's.
+pub fn read_peers(path: &Path) -> anyhow::Result<(String, String, Vec<Point>)> {
+    let (case, label, points) = read_speed_accuracy(path, None)?;
+    if let Some(i) = points.iter().position(|p| p.code == OWN_CODE) {
+        anyhow::bail!(
+            "{}: row {}: field `code` is `{OWN_CODE}`; a peers file holds other codes' runs (expected e.g. `DualSPHysics 5.0`)",
+            path.display(),
+            i + 1
+        );
+    }
+    Ok((case, label, points))
+}
+
+/// A peers file must be of the chart's case and measure the chart's quantity, or its points mean nothing beside
+/// ours: `ours` and `theirs` are (case, quantity label).
+pub fn check_peers(path: &Path, ours: (&str, &str), theirs: (&str, &str)) -> anyhow::Result<()> {
+    anyhow::ensure!(
+        theirs.0 == ours.0,
+        "{}: field `case` is `{}`; expected `{}`, the chart's case",
+        path.display(),
+        theirs.0,
+        ours.0
+    );
+    anyhow::ensure!(
+        theirs.1 == ours.1,
+        "{}: field `quantity` is `{}`; expected the chart's quantity `{}`",
+        path.display(),
+        theirs.1,
+        ours.1
+    );
+    Ok(())
+}
+
+/// Draws the error against CPU seconds, one line per code and variant (a peer's lines named with its code),
+/// and the Pareto front of this project's runs.
 pub fn plot_speed_accuracy(png: &Path, case: &str, quantity: &str, points: &[Point]) -> anyhow::Result<()> {
     let front = pareto_front(points);
-    let mut variants: Vec<&str> = points.iter().map(|p| p.variant.as_str()).collect();
-    variants.dedup();
-    let mut series: Vec<crate::io::plot::Series> = variants
+    let mut lines: Vec<(&str, &str)> = points.iter().map(|p| (p.code.as_str(), p.variant.as_str())).collect();
+    lines.dedup();
+    let mut series: Vec<crate::io::plot::Series> = lines
         .iter()
-        .map(|v| crate::io::plot::Series {
-            name: v.to_string(),
+        .map(|&(code, v)| crate::io::plot::Series {
+            name: if code == OWN_CODE {
+                v.to_string()
+            } else {
+                format!("{code}: {v}")
+            },
             points: points
                 .iter()
-                .filter(|p| p.variant == *v && p.error.is_finite() && p.error > 0.0)
+                .filter(|p| p.code == code && p.variant == v && p.error.is_finite() && p.error > 0.0)
                 .map(|p| (p.cpu_seconds, p.error))
                 .collect(),
             style: crate::io::plot::Style::LineMarkers,
@@ -447,5 +509,62 @@ mod tests {
             let e = apply_variant(&mut c, bad).unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains("expected"), "{e}");
         }
+    }
+
+    fn point(code: &str, variant: &str, cpu: f64, error: f64) -> Point {
+        Point {
+            code: code.into(),
+            variant: variant.into(),
+            res: 40.0,
+            cpu_seconds: cpu,
+            particles: 3200,
+            steps: 100,
+            error,
+            stopped: None,
+        }
+    }
+
+    #[test]
+    fn peers_are_drawn_but_left_off_the_pareto_front() {
+        let points = vec![
+            point(OWN_CODE, "delta-sph", 10.0, 0.2),
+            point(OWN_CODE, "wcsph", 20.0, 0.3),
+            // Faster and more accurate than both of ours: still not on our front.
+            point("DualSPHysics 5.0", "Wendland", 5.0, 0.1),
+        ];
+        assert_eq!(pareto_front(&points), vec![0]);
+        let dir = std::env::temp_dir().join(format!("bowwave-peers-{}", std::process::id()));
+        let files = write_speed_accuracy(&dir, "dam-break", "P1c error", &points).unwrap();
+        let (case, label, back) = read_speed_accuracy(&files[0], None).unwrap();
+        assert_eq!((case.as_str(), label.as_str()), ("dam-break", "P1c error"));
+        assert_eq!(
+            back.iter().map(|p| p.code.as_str()).collect::<Vec<_>>(),
+            [OWN_CODE, OWN_CODE, "DualSPHysics 5.0"]
+        );
+        // A peers file must hold other codes only, of the chart's case and quantity.
+        let e = read_peers(&files[0]).unwrap_err().to_string();
+        assert!(e.contains("row 1") && e.contains("`code`"), "{e}");
+        let peers = dir.join("peers.csv");
+        std::fs::write(
+            &peers,
+            "case,code,variant,res,particles,steps,cpu_seconds,error,pareto,stopped,quantity\n\
+             dam-break,PySPH 1.0b2,EDAC,40,3200,9000,50.0,0.07,false,,P1c error\n",
+        )
+        .unwrap();
+        let (pc, pl, pp) = read_peers(&peers).unwrap();
+        assert_eq!(pp.len(), 1);
+        check_peers(&peers, ("dam-break", "P1c error"), (&pc, &pl)).unwrap();
+        let e = check_peers(&peers, ("dam-break", "P1 vs Marrone"), (&pc, &pl))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("peers.csv") && e.contains("`quantity`") && e.contains("P1 vs Marrone"),
+            "{e}"
+        );
+        let e = check_peers(&peers, ("dam-break-mm", "P1c error"), (&pc, &pl))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("`case`") && e.contains("dam-break-mm"), "{e}");
+        std::fs::remove_dir_all(&dir).ok();
     }
 }

@@ -112,6 +112,7 @@ pub fn twodt_speed_accuracy(
                 r.cpu_seconds
             );
             chart.points.push(Point {
+                code: super::charts::OWN_CODE.into(),
                 variant: v.clone(),
                 res: 1.0 / dx,
                 cpu_seconds: r.cpu_seconds,

@@ -114,8 +114,22 @@ const TRIXI_RHO0: f64 = 1000.0;
 /// TrixiParticles' reference run at P1's centre (`data/reference/trixiparticles_wcsph_damBreak_P4_H600_80_400.csv`)
 /// at H/dx 80 or 400, the one closer to `res` (in log): (its H/dx, t√(g/H), p/(ρ0 g H)).
 pub fn trixi_p1_centre(res: f64) -> (usize, Vec<f64>, Vec<f64>) {
-    let t = reference::load("trixi_p1_centre");
     let n = nearest_resolution(res, &[80, 400]);
+    let (ts, ps) = trixi_p1_centre_run(n);
+    (n, ts, ps)
+}
+
+/// The label of P1c's error against TrixiParticles' converged run (the chart's `--quantity` picks it by
+/// "converged"); tools/dam-break-peers/p1c_error.py writes the same label for the peers it reads.
+pub fn p1c_converged_label() -> String {
+    format!(
+        "P1c (8.4 mm) mean |p-p_ref|/(rho g H), t* in [2,7], vs TrixiParticles H/dx={TRIXI_CONVERGED_RES} (converged)"
+    )
+}
+
+/// TrixiParticles' run at P1's centre at H/dx `n` (80 or 400): (t√(g/H), p/(ρ0 g H)).
+fn trixi_p1_centre_run(n: usize) -> (Vec<f64>, Vec<f64>) {
+    let t = reference::load("trixi_p1_centre");
     let ts = reference::col(&t, 0)
         .iter()
         .map(|s| s * (TRIXI_G / TRIXI_H).sqrt())
@@ -124,8 +138,13 @@ pub fn trixi_p1_centre(res: f64) -> (usize, Vec<f64>, Vec<f64>) {
         .iter()
         .map(|p| p / (TRIXI_RHO0 * TRIXI_G * TRIXI_H))
         .collect();
-    (n, ts, ps)
+    (ts, ps)
 }
+
+/// H/dx of TrixiParticles' finer run, the converged reference of the dam-break speed–accuracy chart: its P1c
+/// differs from their H/dx 80 run by 0.017 ρgH on average over t√(g/H) 2–6, a floor below which no code's
+/// error against it means anything (studies/results/validation/LOG.md, check 14).
+pub const TRIXI_CONVERGED_RES: usize = 400;
 
 /// t√(g/H) at which the dam break's plunging wave closes an air cavity (thesis §8.4, text beside Fig. 8.30).
 pub const CAVITY_CLOSURE_T_STAR: f64 = 6.0;
@@ -231,6 +250,17 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
             f64::NAN,
             f64::NAN,
             mean_abs_difference(&ts, &pc, &tt, &tp),
+            None,
+        ));
+        // The same against their finer run at every resolution: the dam-break speed–accuracy chart's measure
+        // (a quantity that converges, against a converged run of another code; docs/reference/speed-accuracy.md).
+        let (ct, cp) = trixi_p1_centre_run(TRIXI_CONVERGED_RES);
+        out.push(check(
+            r,
+            &p1c_converged_label(),
+            f64::NAN,
+            f64::NAN,
+            mean_abs_difference(&ts, &pc, &ct, &cp),
             None,
         ));
         let ours = mean_over(&ts, &pc, window_from, window_to);

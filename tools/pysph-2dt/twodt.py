@@ -17,9 +17,10 @@ particles, not a different resolution where the jet forms).
 
 Scheme: PySPH 1.0b2's EDAC (entropically damped artificial compressibility) with Adami et al.'s (2012) wall
 condition: the wall pressure extrapolated from the fluid with the wall's acceleration, which needs no wall
-history, so the hull's wall particles can be placed anew at every step. Wendland quintic kernel, h = 1.33 dx
-(bowwave: Gaussian), artificial viscosity alpha = 0.02 (bowwave's delta-SPH: alpha 0.02, density diffusion
-0.1), inviscid (free slip), no XSPH, c0 from bowwave's case.
+history, so the hull's wall particles can be placed anew at every step. Wendland quintic kernel (support 2h), or
+with --sph-kernel gaussian PySPH's Gaussian (support 3h, as bowwave's), h = 1.33 dx; artificial viscosity alpha =
+0.02 (bowwave's delta-SPH: alpha 0.02, density diffusion 0.1), inviscid (free slip), no XSPH, c0 from bowwave's
+case.
 
 The hull: after every step its wall particles are placed on the section at the new time: points at arc-length
 spacing dx along the section from the keel (the first dx/2 from it), LAYERS layers inside it along the normal,
@@ -30,7 +31,7 @@ Outputs every --every x/L; read them with crest_from_outputs.py.
 """
 import json
 import numpy as np
-from pysph.base.kernels import WendlandQuintic
+from pysph.base.kernels import Gaussian, WendlandQuintic
 from pysph.base.utils import get_particle_array
 from pysph.solver.application import Application
 from pysph.sph.wc.edac import EDACScheme
@@ -82,6 +83,9 @@ class TwoDt(Application):
         group.add_argument('--x-end', type=float, default=0.4, dest='x_end')
         group.add_argument('--dx', type=float, default=None, dest='dx_override', help='override the case dx/L')
         group.add_argument('--every', type=float, default=0.005, dest='every', help='output interval in x/L')
+        group.add_argument('--sph-kernel', choices=['wendland5', 'gaussian'], default='wendland5', dest='kernel_name',
+                           help="wendland5 (PySPH's Wendland quintic, support 2h) or gaussian (PySPH's Gaussian, "
+                                "support 3h, as bowwave's kernel: a check of the kernel's part in a difference)")
 
     def consume_user_options(self):
         o = self.options
@@ -117,7 +121,8 @@ class TwoDt(Application):
         t_end = (self.options.x_end - self.x0) / self.fr
         pfreq = max(1, int(round(self.options.every / self.fr / dt)))
         self.scheme.configure(h=self.h, c0=self.c0)
-        self.scheme.configure_solver(kernel=WendlandQuintic(dim=2), dt=dt, tf=t_end, pfreq=pfreq)
+        kernel = Gaussian(dim=2) if self.options.kernel_name == 'gaussian' else WendlandQuintic(dim=2)
+        self.scheme.configure_solver(kernel=kernel, dt=dt, tf=t_end, pfreq=pfreq)
 
     def create_equations(self):
         eqns = self.scheme.get_equations()

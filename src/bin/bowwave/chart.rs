@@ -24,6 +24,12 @@ pub enum ChartKind {
         /// The validated quantity: the first check whose label contains this text (default: the first check).
         #[arg(long)]
         quantity: Option<String>,
+        /// Other codes' runs of the same case to draw beside ours: a speed_accuracy.csv whose rows have a `code`
+        /// other than bowwave, the same case and the same `quantity` label, each error computed from that code's
+        /// outputs (e.g. studies/results/speed-accuracy/dam-break/peers.csv, written by
+        /// tools/dam-break-peers/p1c_error.py). They are left out of the Pareto front.
+        #[arg(long)]
+        peers: Option<PathBuf>,
         /// Output folder (default out/chart-CASE).
         #[arg(long)]
         out: Option<PathBuf>,
@@ -112,11 +118,18 @@ impl ChartKind {
                 res,
                 end,
                 quantity,
+                peers,
                 out,
             } => {
                 use bowwave::methods::charts;
                 let c = bowwave::cases::load(&case)?;
-                let (label, points) = charts::speed_accuracy(&c, &variants, &res, end, quantity.as_deref())?;
+                // Read before the runs, so that a bad file stops the command before an hour of them.
+                let peer_points = peers.as_deref().map(charts::read_peers).transpose()?;
+                let (label, mut points) = charts::speed_accuracy(&c, &variants, &res, end, quantity.as_deref())?;
+                if let (Some(path), Some((peer_case, peer_label, peer_points))) = (&peers, peer_points) {
+                    charts::check_peers(path, (&c.name, &label), (&peer_case, &peer_label))?;
+                    points.extend(peer_points);
+                }
                 let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-{}", c.name)));
                 println!("{}: {label}", c.name);
                 println!("variant        res   particles   steps   CPU s      error   stopped");
