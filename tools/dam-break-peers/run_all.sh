@@ -17,8 +17,8 @@ for r in 25 50 100; do
       -dirdataout data -svres -ompthreads:1 > dsph/run$r.log
   $DSPH/PartVTK_linux64 -dirin dsph/run$r/data -savecsv dsph/csv$r/PartFluid -onlytype:-all,+fluid \
       -vars:-all,+press,+mass,+rhop > dsph/partvtk$r.log
-  steps=$(grep -o 'Steps per second.*\|Total steps.*' dsph/run$r.log | head -1 | grep -o '[0-9]*' | head -1)
-  python3 $P/p1c_error.py dualsphysics dsph/csv$r --res $r --every 0.006386 --cpu $(cpu dsph/time$r) \
+  steps=$(grep 'Steps of simulation' dsph/run$r.log | grep -o '[0-9]*$')
+  python3 $P/p1c_error.py dualsphysics dsph/csv$r --res $r --cpu $(cpu dsph/time$r) \
       --label 'DualSPHysics 5.0' --variant 'Wendland, Verlet, DDT 0.1' --steps "${steps:-0}" --peers peers.csv
 done
 

@@ -35,7 +35,7 @@ def read(dir_, at, first_to):
     row['first crest'] = float(c[k])
     row['its x/L'] = float(x[k])
     path = os.path.join(dir_, 'plunge.json')
-    p = json.load(open(path)) if os.path.exists(path) else {}
+    p = (json.load(open(path)) if os.path.exists(path) else None) or {}
     for key, name in [('x_plunge_over_l', 'x_plunge/L'), ('y_plunge_over_l', 'y_plunge/L'),
                       ('h_pj_over_d', 'H_pj/D'), ('gamma_over_ud', 'Gamma/(UD)'), ('jet_particles', 'jet particles')]:
         row[name] = float(p[key]) if key in p else math.nan
