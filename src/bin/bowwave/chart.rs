@@ -69,6 +69,10 @@ pub enum ChartKind {
         /// Label of the error axis, for files written before the csv carried its `quantity` column.
         #[arg(long)]
         quantity: Option<String>,
+        /// Other codes' runs to add or replace (as `speed-accuracy --peers`): rows of these codes already in the
+        /// csv are replaced by the file's.
+        #[arg(long)]
+        peers: Option<PathBuf>,
     },
     /// The case over a grid of two lists of variants (e.g. --rows alpha=0,alpha=0.005 --cols delta-sph,wcsph,
     /// or --rows cfl=1,cfl=2 --cols rk4,pc), each run marked stable or stopped with its diagnosis; writes
@@ -210,10 +214,16 @@ impl ChartKind {
                 twodt_chart::write_twodt_chart(&out, &format!("{name} Fr {fr} (2D+t)"), at, &chart)?;
                 println!("wrote {}", out.display());
             }
-            ChartKind::Replot { dir, quantity } => {
+            ChartKind::Replot { dir, quantity, peers } => {
                 use bowwave::methods::charts;
-                let (case, label, points) =
+                let (case, label, mut points) =
                     charts::read_speed_accuracy(&dir.join("speed_accuracy.csv"), quantity.as_deref())?;
+                if let Some(path) = &peers {
+                    let (peer_case, peer_label, peer_points) = charts::read_peers(path)?;
+                    charts::check_peers(path, (&case, &label), (&peer_case, &peer_label))?;
+                    points.retain(|p| !peer_points.iter().any(|q| q.code == p.code));
+                    points.extend(peer_points);
+                }
                 for f in charts::write_speed_accuracy(&dir, &case, &label, &points)? {
                     println!("wrote {}", f.display());
                 }
