@@ -32,7 +32,8 @@ pub struct Series {
     pub style: Style,
 }
 
-const COLOURS: [RGBColor; 8] = [
+/// Series colours in order, repeating after the last (a chart of the dam break's variants and its peers draws 10).
+const COLOURS: [RGBColor; 11] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
     RGBColor(44, 160, 44),
@@ -41,6 +42,9 @@ const COLOURS: [RGBColor; 8] = [
     RGBColor(255, 127, 14),
     RGBColor(140, 86, 75),
     RGBColor(23, 190, 207),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
 ];
 
 /// Draws the series on linear axes and writes a PNG (1000×600) with a legend.
