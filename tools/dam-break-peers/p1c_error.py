@@ -32,6 +32,10 @@ import sys
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The dam break's PySPH cross-check reads bowwave's VTK frames and PySPH's outputs; its readers are used here.
+sys.path.insert(0, os.path.join(HERE, '..', 'pysph-dam-break'))
+from p1_from_outputs import read_vtp  # noqa: E402
+from snapshots import pysph_snapshots  # noqa: E402
 REFERENCE = os.path.join(HERE, '..', '..', 'data', 'reference', 'trixiparticles_wcsph_damBreak_P4_H600_80_400.csv')
 # The label bowwave's check carries (src/validation/dam_break.rs, p1c_converged_label): the chart refuses peers
 # whose label differs.
@@ -57,15 +61,6 @@ def option(name, default=None, kind=str):
     return default
 
 
-def read_vtp(path):
-    text = open(path).read()
-    arrays = {}
-    for m in re.finditer(r'<DataArray([^>]*)>(.*?)</DataArray>', text, re.S):
-        name = re.search(r'Name="([^"]*)"', m.group(1))
-        arrays[name.group(1) if name else 'Points'] = np.array(m.group(2).split(), dtype=float)
-    return arrays
-
-
 def bowwave_snapshots(folder, dx):
     """(t in s, x, y, p, volume) of a bowwave vtk/ folder; H = 0.6 m, rho0 = 1000."""
     pvd = open(glob.glob(os.path.join(folder, '*.pvd'))[0]).read()
@@ -75,14 +70,10 @@ def bowwave_snapshots(folder, dx):
         yield float(t), pts[:, 0], pts[:, 1], a['pressure'], np.full(len(pts), dx * dx)
 
 
-def pysph_snapshots(folder):
-    from pysph.solver.utils import load
-    files = sorted(glob.glob(os.path.join(folder, '*_[0-9]*.npz')),
-                   key=lambda f: int(re.findall(r'_(\d+)\.npz', f)[-1]))
-    for f in files:
-        data = load(f)
-        fl = data['arrays']['fluid']
-        yield float(data['solver_data']['t']), fl.x, fl.y, fl.p, fl.m / fl.rho
+def pysph_frames(folder):
+    """(t in s, x, y, p, volume) of a PySPH output folder."""
+    for t, fl in pysph_snapshots(folder):
+        yield float(t), fl.x, fl.y, fl.p, fl.m / fl.rho
 
 
 def dualsphysics_snapshots(folder):
@@ -140,7 +131,7 @@ def main():
         snaps = bowwave_snapshots(folder, height / res)
     elif code == 'pysph':
         height, rho0 = 0.6, 1000.0
-        snaps = pysph_snapshots(folder)
+        snaps = pysph_frames(folder)
     elif code == 'dualsphysics':
         height, rho0 = 1.0, 1000.0
         snaps = dualsphysics_snapshots(folder)
