@@ -323,6 +323,20 @@ pub fn check_peers(path: &Path, ours: (&str, &str), theirs: (&str, &str)) -> any
     Ok(())
 }
 
+/// Adds the peers read by [`read_peers`] from `path` to a chart's `points` of case and quantity `ours`, after
+/// [`check_peers`]; rows of a code the file holds that `points` already has are replaced by the file's.
+pub fn merge_peers(
+    points: &mut Vec<Point>,
+    ours: (&str, &str),
+    path: &Path,
+    (case, label, peers): (String, String, Vec<Point>),
+) -> anyhow::Result<()> {
+    check_peers(path, ours, (&case, &label))?;
+    points.retain(|p| !peers.iter().any(|q| q.code == p.code));
+    points.extend(peers);
+    Ok(())
+}
+
 /// Draws the error against CPU seconds, one line per code and variant (a peer's lines named with its code),
 /// and the Pareto front of this project's runs.
 pub fn plot_speed_accuracy(png: &Path, case: &str, quantity: &str, points: &[Point]) -> anyhow::Result<()> {

@@ -130,9 +130,8 @@ impl ChartKind {
                 // Read before the runs, so that a bad file stops the command before an hour of them.
                 let peer_points = peers.as_deref().map(charts::read_peers).transpose()?;
                 let (label, mut points) = charts::speed_accuracy(&c, &variants, &res, end, quantity.as_deref())?;
-                if let (Some(path), Some((peer_case, peer_label, peer_points))) = (&peers, peer_points) {
-                    charts::check_peers(path, (&c.name, &label), (&peer_case, &peer_label))?;
-                    points.extend(peer_points);
+                if let (Some(path), Some(read)) = (&peers, peer_points) {
+                    charts::merge_peers(&mut points, (&c.name, &label), path, read)?;
                 }
                 let out = out.unwrap_or_else(|| PathBuf::from("out").join(format!("chart-{}", c.name)));
                 println!("{}: {label}", c.name);
@@ -219,10 +218,7 @@ impl ChartKind {
                 let (case, label, mut points) =
                     charts::read_speed_accuracy(&dir.join("speed_accuracy.csv"), quantity.as_deref())?;
                 if let Some(path) = &peers {
-                    let (peer_case, peer_label, peer_points) = charts::read_peers(path)?;
-                    charts::check_peers(path, (&case, &label), (&peer_case, &peer_label))?;
-                    points.retain(|p| !peer_points.iter().any(|q| q.code == p.code));
-                    points.extend(peer_points);
+                    charts::merge_peers(&mut points, (&case, &label), path, charts::read_peers(path)?)?;
                 }
                 for f in charts::write_speed_accuracy(&dir, &case, &label, &points)? {
                     println!("wrote {}", f.display());
