@@ -171,6 +171,13 @@ fn bad_twodt_options_are_refused_with_what_was_expected() {
         ),
         (
             TwoDtConfig {
+                alpha: Some(-0.01),
+                ..base.clone()
+            },
+            "artificial viscosity",
+        ),
+        (
+            TwoDtConfig {
                 fr: f64::NAN,
                 ..base.clone()
             },

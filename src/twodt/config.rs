@@ -285,6 +285,11 @@ pub struct TwoDtConfig {
     /// CFL number of eq. (4.22) (default: the integrator's, RK4 2.0).
     #[arg(long)]
     pub cfl: Option<f64>,
+    /// Artificial viscosity α of eq. (4.11), dimensionless: ν = α h c0 / 8 in 2D, so that doubling `--c0`
+    /// doubles ν unless α is halved (default: the solver's 0.02, docs/decisions/viscosity.md; the thesis,
+    /// §4.1.1, needs α > 0.01 for stability).
+    #[arg(long)]
+    pub alpha: Option<f64>,
     /// Pack the initial particles (thesis chapter 6: moved along −∇Γ inside the tank closed by a lid at the
     /// calm level) before the damped settling: auto (when ratio > 1), on, or off.
     #[arg(long, default_value_t = d().packing)]
@@ -336,6 +341,7 @@ impl Default for TwoDtConfig {
             shifting: ParticleShifting::None,
             exact_kernel: false,
             cfl: None,
+            alpha: None,
             packing: Packing::Auto,
             air: None,
             air_density: 1e-3,
@@ -355,6 +361,7 @@ pub enum ConfigOption {
     DepthOverDraft,
     C0,
     Cfl,
+    Alpha,
     Settle,
     OutputDx,
     AfterPlunge,
@@ -379,6 +386,7 @@ impl ConfigOption {
             ConfigOption::DepthOverDraft => "depth",
             ConfigOption::C0 => "c0",
             ConfigOption::Cfl => "cfl",
+            ConfigOption::Alpha => "alpha",
             ConfigOption::Settle => "settle",
             ConfigOption::OutputDx => "output_dx",
             ConfigOption::AfterPlunge => "after_plunge",
@@ -403,6 +411,7 @@ impl ConfigOption {
             ConfigOption::DepthOverDraft => "water depth Z/D",
             ConfigOption::C0 => "c0/√(gL)",
             ConfigOption::Cfl => "CFL",
+            ConfigOption::Alpha => "artificial viscosity α",
             ConfigOption::Settle => "settling",
             ConfigOption::OutputDx => "output spacing x/L",
             ConfigOption::AfterPlunge => "run-on after the plunge x/L",
@@ -460,6 +469,9 @@ impl TwoDtConfig {
         }
         if let Some(cfl) = self.cfl.filter(|&c| !positive(c)) {
             return fail(O::Cfl, "> 0", &cfl);
+        }
+        if let Some(alpha) = self.alpha.filter(|&a| !non_negative(a)) {
+            return fail(O::Alpha, "0 or more", &alpha);
         }
         if !non_negative(self.settle_crossings) {
             return fail(O::Settle, "0 or more acoustic crossings", &self.settle_crossings);

@@ -10,6 +10,7 @@ use crate::geometry::surface::HullSurface;
 use crate::sph::body_force::BodyForce;
 use crate::sph::boundary::{Boundary, RigidMotion};
 use crate::sph::deforming_wall::DeformingWall;
+use crate::sph::equations::viscosity::Viscosity;
 use crate::sph::multi_fluid::{equal_stiffness_sound_speed, MultiFluid, Phase};
 use crate::sph::particles::{Fluid, MAX_PARTICLES};
 use crate::sph::polyline_wall::{solid_side, FluidSide, PolylineWall};
@@ -262,6 +263,9 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     cfg_s.diffusion = cfg.diffusion;
     cfg_s.kernel_table = !cfg.exact_kernel;
     cfg_s.shifting = cfg.shifting;
+    if let Some(alpha) = cfg.alpha {
+        cfg_s.viscosity = Viscosity::Artificial { alpha };
+    }
     if let Some(cfl) = cfg.cfl {
         cfg_s.cfl = cfl;
     }
@@ -490,5 +494,24 @@ mod tests {
             .expect("a spacing over D/4 is refused")
             .to_string();
         assert!(e.contains("dx/L") && e.contains("D/4"), "{e}");
+    }
+
+    /// `--alpha` sets the solver's artificial viscosity (eq. 4.11); without it the solver's default stays.
+    #[test]
+    fn alpha_option_sets_the_artificial_viscosity_and_its_absence_keeps_the_default() {
+        let spec = wigley::WigleySpec::default();
+        let hull = Arc::new(HullSurface::new(&wigley::wigley(&spec)));
+        let draft = hull.meta.draft_m / hull.meta.length_m;
+        let mut cfg = TwoDtConfig {
+            fr: 0.5,
+            dx: Some(draft / 4.0),
+            coarse_ratio: 1.0,
+            ..TwoDtConfig::default()
+        };
+        let scene = build(hull.clone(), &cfg).expect("coarse Wigley scene");
+        assert_eq!(scene.sim.cfg.viscosity, Viscosity::default());
+        cfg.alpha = Some(0.04);
+        let scene = build(hull, &cfg).expect("coarse Wigley scene");
+        assert_eq!(scene.sim.cfg.viscosity, Viscosity::Artificial { alpha: 0.04 });
     }
 }

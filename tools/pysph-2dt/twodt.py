@@ -15,12 +15,17 @@ y = W (W = width * B), open top; fluid at rest below z = 0 outside the section a
 Uniform spacing dx everywhere (bowwave grades its rows below 0.2 D at constant h: PySPH cannot, so it has more
 particles, not a different resolution where the jet forms).
 
-Scheme: PySPH 1.0b2's EDAC (entropically damped artificial compressibility) with Adami et al.'s (2012) wall
+Scheme (--scheme edac, the default, or delta_sph): PySPH 1.0b2's EDAC (entropically damped artificial compressibility) with Adami et al.'s (2012) wall
 condition: the wall pressure extrapolated from the fluid with the wall's acceleration, which needs no wall
 history, so the hull's wall particles can be placed anew at every step. Wendland quintic kernel (support 2h), or
 with --sph-kernel gaussian PySPH's Gaussian (support 3h, as bowwave's), h = 1.33 dx; artificial viscosity alpha =
-0.02 (bowwave's delta-SPH: alpha 0.02, density diffusion 0.1), inviscid (free slip), no XSPH, c0 from bowwave's
-case.
+0.02 (bowwave's delta-SPH: alpha 0.02, density diffusion 0.1), no XSPH, c0 from bowwave's case. EDAC's
+artificial viscosity also acts between fluid and wall particles, at the wall's velocity: a friction along the
+hull that lowered the first crest by 39 % at dx/L 1.4e-3 (issue #30, session 41). --wall-viscosity off limits it
+to fluid pairs, so that the walls are free-slip for every term, as bowwave's ghosts (eq. 7.2) and the thesis's
+inviscid 2D+t; compare the codes with it off. --scheme delta_sph is the thesis's delta-SPH built from PySPH's
+own equations with Adami's walls, free slip (DeltaSphAdami below): the scheme bowwave runs, with another wall
+condition and kernel.
 
 The hull: after every step its wall particles are placed on the section at the new time: points at arc-length
 spacing dx along the section from the keel (the first dx/2 from it), LAYERS layers inside it along the normal,
@@ -33,9 +38,11 @@ import json
 import numpy as np
 from pysph.base.kernels import Gaussian, WendlandQuintic
 from pysph.base.utils import get_particle_array
+from pysph.sph.wc.transport_velocity import MomentumEquationArtificialViscosity
 from pysph.solver.application import Application
 from pysph.sph.wc.edac import EDACScheme
 from pysph.sph.basic_equations import XSPHCorrection
+from pysph.sph.scheme import Scheme, SchemeChooser
 
 LAYERS = 4
 HDX = 1.33
@@ -73,6 +80,69 @@ class Sections:
         return (1 - f) * self.data[i] + f * self.data[i + 1]
 
 
+class DeltaSphAdami(Scheme):
+    """The thesis's delta-SPH (eq. 5.1: continuity with the density diffusion of eq. 5.2 and its renormalised
+    density gradient, momentum with p_i + p_j written as p_i/rho_i^2 + p_j/rho_j^2, the artificial viscosity of
+    eq. 4.11 on every fluid pair), linear state equation, assembled from PySPH's own delta-SPH equations; the walls
+    are Adami et al.'s (2012): pressure extrapolated from the fluid with the wall's acceleration, density from it
+    by the state equation, the wall's prescribed velocity in the continuity equation, no viscosity with the walls
+    (free slip). The scheme differs from bowwave's in the wall condition only (and the kernel: PySPH's), so that
+    a difference that survives it is the wall's."""
+
+    def __init__(self, fluids, solids, dim, rho0, c0, h0, gy, alpha=0.02, delta=0.1):
+        self.fluids, self.solids, self.dim = fluids, solids, dim
+        self.rho0, self.c0, self.h0, self.gy = rho0, c0, h0, gy
+        self.alpha, self.delta = alpha, delta
+        self.solver = None
+
+    def configure(self, h=None, c0=None, **kw):
+        if h is not None:
+            self.h0 = h
+        if c0 is not None:
+            self.c0 = c0
+        super().configure(**kw)
+
+    def configure_solver(self, kernel=None, integrator_cls=None, extra_steppers=None, **kw):
+        from pysph.sph.integrator import PECIntegrator
+        from pysph.sph.integrator_step import WCSPHStep
+        from pysph.solver.solver import Solver
+        steppers = {name: WCSPHStep() for name in self.fluids}
+        self.solver = Solver(dim=self.dim, integrator=PECIntegrator(**steppers), kernel=kernel, **kw)
+
+    def get_equations(self):
+        from pysph.sph.equation import Group
+        from pysph.sph.basic_equations import ContinuityEquation
+        from pysph.sph.wc.basic import (TaitEOS, MomentumEquation, ContinuityEquationDeltaSPH,
+                                        ContinuityEquationDeltaSPHPreStep, MomentumEquationDeltaSPH)
+        from pysph.sph.wc.kernel_correction import GradientCorrectionPreStep, GradientCorrection
+        from pysph.sph.wc.transport_velocity import SolidWallPressureBC
+        everything = self.fluids + self.solids
+        g0 = [TaitEOS(dest=f, sources=None, rho0=self.rho0, c0=self.c0, gamma=1.0) for f in self.fluids]
+        g1 = [SolidWallPressureBC(dest=s, sources=self.fluids, rho0=self.rho0, p0=self.rho0 * self.c0 ** 2, b=1.0,
+                                  gy=self.gy) for s in self.solids]
+        g1 += [GradientCorrectionPreStep(dest=f, sources=self.fluids, dim=self.dim) for f in self.fluids]
+        g2 = []
+        for f in self.fluids:
+            g2 += [GradientCorrection(dest=f, sources=self.fluids), ContinuityEquationDeltaSPHPreStep(dest=f, sources=self.fluids)]
+        g3 = []
+        for f in self.fluids:
+            g3 += [ContinuityEquation(dest=f, sources=everything),
+                   ContinuityEquationDeltaSPH(dest=f, sources=self.fluids, c0=self.c0, delta=self.delta),
+                   MomentumEquation(dest=f, sources=everything, c0=self.c0, alpha=0.0, beta=0.0, gy=self.gy),
+                   MomentumEquationDeltaSPH(dest=f, sources=self.fluids, rho0=self.rho0, c0=self.c0,
+                                            alpha=self.alpha)]
+        return [Group(equations=g0, real=False), Group(equations=g1, real=False), Group(equations=g2),
+                Group(equations=g3)]
+
+    def setup_properties(self, particles, clean=True):
+        from pysph.base.utils import get_particle_array_wcsph
+        props = list(get_particle_array_wcsph(name='junk').properties.keys())
+        props += [{'name': 'm_mat', 'stride': 9}, {'name': 'gradrho', 'stride': 3}, 'wij']
+        for pa in particles:
+            self._ensure_properties(pa, props, clean)
+            pa.set_output_arrays(['x', 'y', 'u', 'v', 'rho', 'm', 'h', 'p', 'pid', 'gid', 'tag'])
+
+
 class TwoDt(Application):
     def add_user_options(self, group):
         group.add_argument('--sections', required=True, dest='sections')
@@ -86,6 +156,11 @@ class TwoDt(Application):
         group.add_argument('--sph-kernel', choices=['wendland5', 'gaussian'], default='wendland5', dest='kernel_name',
                            help="wendland5 (PySPH's Wendland quintic, support 2h) or gaussian (PySPH's Gaussian, "
                                 "support 3h, as bowwave's kernel: a check of the kernel's part in a difference)")
+        group.add_argument('--wall-viscosity', choices=['on', 'off'], default='on', dest='wall_viscosity',
+                           help="on (EDAC's default: the artificial viscosity also acts between a fluid particle "
+                                "and the wall particles, at the wall's own velocity, a friction along the hull) or "
+                                "off (fluid pairs only: the walls free-slip for the viscosity too, as bowwave's "
+                                "free-slip ghosts, eq. 7.2)")
 
     def consume_user_options(self):
         o = self.options
@@ -112,8 +187,10 @@ class TwoDt(Application):
         self.park = (-0.5 * self.width, -2.0 * self.depth)
 
     def create_scheme(self):
-        return EDACScheme(fluids=['fluid'], solids=['walls', 'hull'], dim=2, c0=1.0, nu=0.0, rho0=1.0, h=1.0,
+        edac = EDACScheme(fluids=['fluid'], solids=['walls', 'hull'], dim=2, c0=1.0, nu=0.0, rho0=1.0, h=1.0,
                           pb=0.0, gy=-1.0, eps=0.0, clamp_p=True, alpha=0.02)
+        delta = DeltaSphAdami(fluids=['fluid'], solids=['walls', 'hull'], dim=2, rho0=1.0, c0=1.0, h0=1.0, gy=-1.0)
+        return SchemeChooser(default='edac', edac=edac, delta_sph=delta)
 
     def configure_scheme(self):
         dt = 0.125 * self.h / self.c0
@@ -130,6 +207,9 @@ class TwoDt(Application):
             for i, e in enumerate(grp.equations):
                 if isinstance(e, XSPHCorrection):
                     grp.equations[i] = XSPHCorrection(dest=e.dest, sources=e.sources, eps=0.0)
+                if isinstance(e, MomentumEquationArtificialViscosity) and self.options.wall_viscosity == 'off':
+                    grp.equations[i] = MomentumEquationArtificialViscosity(dest=e.dest, sources=['fluid'],
+                                                                           alpha=e.alpha, c0=e.c0)
         return eqns
 
     def hull_points(self, t):
@@ -195,6 +275,9 @@ class TwoDt(Application):
                                   y=np.full(self.nmax, self.park[1]), h=self.h, m=m, rho=1.0, p=0.0)
         self.scheme.setup_properties([fluid, walls, hull])
         fluid.p[:] = -zf
+        if self.options.scheme == 'delta_sph':
+            # The density that the linear state equation turns into the hydrostatic pressure.
+            fluid.rho[:] = 1.0 - zf / self.c0 ** 2
         self._hull = hull
         self.place_hull(0.0)
         return [fluid, walls, hull]
