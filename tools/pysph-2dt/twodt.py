@@ -130,7 +130,9 @@ class DeltaSphAdami(Scheme):
                    ContinuityEquationDeltaSPH(dest=f, sources=self.fluids, c0=self.c0, delta=self.delta),
                    MomentumEquation(dest=f, sources=everything, c0=self.c0, alpha=0.0, beta=0.0, gy=self.gy),
                    MomentumEquationDeltaSPH(dest=f, sources=self.fluids, rho0=self.rho0, c0=self.c0,
-                                            alpha=self.alpha)]
+                                            alpha=self.alpha),
+                   # WCSPHStep moves a particle with (ax, ay, az), which XSPHCorrection sets: eps 0 is u itself.
+                   XSPHCorrection(dest=f, sources=[f], eps=0.0)]
         return [Group(equations=g0, real=False), Group(equations=g1, real=False), Group(equations=g2),
                 Group(equations=g3)]
 
