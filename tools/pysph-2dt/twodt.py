@@ -43,6 +43,7 @@ from pysph.solver.application import Application
 from pysph.sph.wc.edac import EDACScheme
 from pysph.sph.basic_equations import XSPHCorrection
 from pysph.sph.scheme import Scheme, SchemeChooser
+from pysph.sph.equation import Equation
 
 LAYERS = 4
 HDX = 1.33
@@ -80,6 +81,52 @@ class Sections:
         return (1 - f) * self.data[i] + f * self.data[i + 1]
 
 
+class WallViscousVelocity(Equation):
+    """A wall particle's velocity in the viscous term of DeltaSphAdami, --wall-viscosity free-slip: the fluid's
+    velocity at the wall particle (Shepard average), its normal component relative to the wall reversed, as the
+    velocity bowwave's free-slip ghost takes from its mirror point (eq. 7.2). Needs the wall's normal (nx, ny)
+    into the fluid on every wall particle."""
+
+    def initialize(self, d_idx, d_uf, d_vf, d_wv):
+        d_uf[d_idx] = 0.0
+        d_vf[d_idx] = 0.0
+        d_wv[d_idx] = 0.0
+
+    def loop(self, d_idx, s_idx, d_uf, d_vf, d_wv, s_u, s_v, WIJ):
+        d_uf[d_idx] += s_u[s_idx] * WIJ
+        d_vf[d_idx] += s_v[s_idx] * WIJ
+        d_wv[d_idx] += WIJ
+
+    def post_loop(self, d_idx, d_uf, d_vf, d_wv, d_u, d_v, d_nx, d_ny, d_ug, d_vg):
+        uf = d_u[d_idx]
+        vf = d_v[d_idx]
+        if d_wv[d_idx] > 1e-14:
+            uf = d_uf[d_idx] / d_wv[d_idx]
+            vf = d_vf[d_idx] / d_wv[d_idx]
+        un = (uf - d_u[d_idx]) * d_nx[d_idx] + (vf - d_v[d_idx]) * d_ny[d_idx]
+        d_ug[d_idx] = uf - 2.0 * un * d_nx[d_idx]
+        d_vg[d_idx] = vf - 2.0 * un * d_ny[d_idx]
+
+
+class WallViscosity(Equation):
+    """The viscous term of eq. 4.11 (PySPH's MomentumEquationDeltaSPH form) between a fluid particle and wall
+    particles, at the wall particle's velocity: its own (free_slip 0: a friction, as EDAC's default) or the
+    mirrored fluid velocity of WallViscousVelocity (free_slip 1)."""
+
+    def __init__(self, dest, sources, rho0, c0, alpha, free_slip):
+        self.rho0, self.c0, self.alpha, self.free_slip = rho0, c0, alpha, free_slip
+        super(WallViscosity, self).__init__(dest, sources)
+
+    def loop(self, d_idx, s_idx, d_rho, d_u, d_v, d_au, d_av, s_m, s_rho, s_u, s_v, s_ug, s_vg,
+             XIJ, HIJ, R2IJ, EPS, DWIJ):
+        uj = self.free_slip * s_ug[s_idx] + (1.0 - self.free_slip) * s_u[s_idx]
+        vj = self.free_slip * s_vg[s_idx] + (1.0 - self.free_slip) * s_v[s_idx]
+        vijdotxij = (d_u[d_idx] - uj) * XIJ[0] + (d_v[d_idx] - vj) * XIJ[1]
+        tmp = self.alpha * HIJ * self.c0 * self.rho0 * vijdotxij / (R2IJ + EPS) * s_m[s_idx] / s_rho[s_idx] / d_rho[d_idx]
+        d_au[d_idx] += tmp * DWIJ[0]
+        d_av[d_idx] += tmp * DWIJ[1]
+
+
 class DeltaSphAdami(Scheme):
     """The thesis's delta-SPH (eq. 5.1: continuity with the density diffusion of eq. 5.2 and its renormalised
     density gradient, momentum with p_i + p_j written as p_i/rho_i^2 + p_j/rho_j^2, the artificial viscosity of
@@ -93,6 +140,7 @@ class DeltaSphAdami(Scheme):
         self.fluids, self.solids, self.dim = fluids, solids, dim
         self.rho0, self.c0, self.h0, self.gy = rho0, c0, h0, gy
         self.alpha, self.delta = alpha, delta
+        self.wall_viscosity = 'off'
         self.solver = None
 
     def configure(self, h=None, c0=None, **kw):
@@ -120,6 +168,8 @@ class DeltaSphAdami(Scheme):
         g0 = [TaitEOS(dest=f, sources=None, rho0=self.rho0, c0=self.c0, gamma=1.0) for f in self.fluids]
         g1 = [SolidWallPressureBC(dest=s, sources=self.fluids, rho0=self.rho0, p0=self.rho0 * self.c0 ** 2, b=1.0,
                                   gy=self.gy) for s in self.solids]
+        if self.wall_viscosity == 'free-slip':
+            g1 += [WallViscousVelocity(dest=s, sources=self.fluids) for s in self.solids]
         g1 += [GradientCorrectionPreStep(dest=f, sources=self.fluids, dim=self.dim) for f in self.fluids]
         g2 = []
         for f in self.fluids:
@@ -131,6 +181,11 @@ class DeltaSphAdami(Scheme):
                    MomentumEquation(dest=f, sources=everything, c0=self.c0, alpha=0.0, beta=0.0, gy=self.gy),
                    MomentumEquationDeltaSPH(dest=f, sources=self.fluids, rho0=self.rho0, c0=self.c0,
                                             alpha=self.alpha),
+                   ]
+            if self.wall_viscosity != 'off':
+                g3 += [WallViscosity(dest=f, sources=self.solids, rho0=self.rho0, c0=self.c0, alpha=self.alpha,
+                                     free_slip=1.0 if self.wall_viscosity == 'free-slip' else 0.0)]
+            g3 += [
                    # WCSPHStep moves a particle with (ax, ay, az), which XSPHCorrection sets: eps 0 is u itself.
                    XSPHCorrection(dest=f, sources=[f], eps=0.0)]
         return [Group(equations=g0, real=False), Group(equations=g1, real=False), Group(equations=g2),
@@ -139,7 +194,8 @@ class DeltaSphAdami(Scheme):
     def setup_properties(self, particles, clean=True):
         from pysph.base.utils import get_particle_array_wcsph
         props = list(get_particle_array_wcsph(name='junk').properties.keys())
-        props += [{'name': 'm_mat', 'stride': 9}, {'name': 'gradrho', 'stride': 3}, 'wij']
+        props += [{'name': 'm_mat', 'stride': 9}, {'name': 'gradrho', 'stride': 3}, 'wij', 'wv', 'uf', 'vf', 'ug',
+                  'vg', 'nx', 'ny']
         for pa in particles:
             self._ensure_properties(pa, props, clean)
             pa.set_output_arrays(['x', 'y', 'u', 'v', 'rho', 'm', 'h', 'p', 'pid', 'gid', 'tag'])
@@ -158,11 +214,12 @@ class TwoDt(Application):
         group.add_argument('--sph-kernel', choices=['wendland5', 'gaussian'], default='wendland5', dest='kernel_name',
                            help="wendland5 (PySPH's Wendland quintic, support 2h) or gaussian (PySPH's Gaussian, "
                                 "support 3h, as bowwave's kernel: a check of the kernel's part in a difference)")
-        group.add_argument('--wall-viscosity', choices=['on', 'off'], default='on', dest='wall_viscosity',
+        group.add_argument('--wall-viscosity', choices=['on', 'off', 'free-slip'], default=None, dest='wall_viscosity',
                            help="on (EDAC's default: the artificial viscosity also acts between a fluid particle "
-                                "and the wall particles, at the wall's own velocity, a friction along the hull) or "
-                                "off (fluid pairs only: the walls free-slip for the viscosity too, as bowwave's "
-                                "free-slip ghosts, eq. 7.2)")
+                                "and the wall particles, at the wall's own velocity, a friction along the hull), "
+                                "off (fluid pairs only; delta_sph's default) or, with --scheme delta_sph only, "
+                                "free-slip (with the wall particles at the fluid's velocity mirrored through the "
+                                "wall, as bowwave's free-slip ghosts carry it, eq. 7.2)")
 
     def consume_user_options(self):
         o = self.options
@@ -195,6 +252,13 @@ class TwoDt(Application):
         return SchemeChooser(default='edac', edac=edac, delta_sph=delta)
 
     def configure_scheme(self):
+        o = self.options
+        if o.wall_viscosity is None:
+            o.wall_viscosity = 'off' if o.scheme == 'delta_sph' else 'on'
+        if o.scheme == 'delta_sph':
+            self.scheme.scheme.wall_viscosity = o.wall_viscosity
+        elif o.wall_viscosity == 'free-slip':
+            raise SystemExit('--wall-viscosity free-slip needs --scheme delta_sph')
         dt = 0.125 * self.h / self.c0
         self.dt_fixed = dt
         t_end = (self.options.x_end - self.x0) / self.fr
@@ -221,7 +285,7 @@ class TwoDt(Application):
         seg = np.hypot(np.diff(p[:, 0]), np.diff(p[:, 1]))
         arc = np.concatenate([[0.0], np.cumsum(seg)])
         if arc[-1] < self.dx:
-            return np.zeros((0, 2)), np.zeros((0, 2)), np.zeros((0, 2))
+            return np.zeros((0, 2)), np.zeros((0, 2)), np.zeros((0, 2)), np.zeros((0, 2))
         sa = np.arange(0.5 * self.dx, arc[-1], self.dx)
         q = np.column_stack([np.interp(sa, arc, p[:, k]) for k in range(2)])
         vq = np.column_stack([np.interp(sa, arc, v[:, k]) for k in range(2)])
@@ -230,11 +294,12 @@ class TwoDt(Application):
         tan /= np.maximum(np.hypot(tan[:, 0], tan[:, 1]), 1e-300)[:, None]
         normal = np.column_stack([tan[:, 1], -tan[:, 0]])  # into the fluid, as bowwave's N_2D (eq. 10.3)
         layers = [q - (k + 0.5) * self.dx * normal for k in range(LAYERS)]
-        return np.vstack(layers), np.vstack([vq] * LAYERS), np.vstack([aq] * LAYERS)
+        return (np.vstack(layers), np.vstack([vq] * LAYERS), np.vstack([aq] * LAYERS),
+                np.vstack([normal] * LAYERS))
 
     def place_hull(self, t):
         pa = self._hull
-        pos, vel, acc = self.hull_points(t)
+        pos, vel, acc, normal = self.hull_points(t)
         n = min(len(pos), self.nmax)
         if len(pos) > self.nmax:
             print(f'warning: {len(pos)} hull wall particles, {self.nmax} slots')
@@ -244,6 +309,10 @@ class TwoDt(Application):
         pa.x[:n], pa.y[:n] = pos[:n, 0], pos[:n, 1]
         pa.u[:n], pa.v[:n] = vel[:n, 0], vel[:n, 1]
         pa.au[:n], pa.av[:n] = acc[:n, 0], acc[:n, 1]
+        if 'nx' in pa.properties:
+            pa.nx[:] = 0.0
+            pa.ny[:] = 1.0
+            pa.nx[:n], pa.ny[:n] = normal[:n, 0], normal[:n, 1]
 
     def create_particles(self):
         dx, w, z = self.dx, self.width, self.depth
@@ -260,22 +329,26 @@ class TwoDt(Application):
             inside = yf < half + 0.5 * dx
         yf, zf = yf[~inside], zf[~inside]
         top = 0.6 * self.draft + 0.5 * z
-        ws, zs_ = [], []
+        ws, zs_, ns = [], [], []
         for k in range(LAYERS):
             off = (k + 0.5) * dx
             zz = -z + (np.arange(-LAYERS, int((z + top) / dx)) + 0.5) * dx
             ws += [np.full_like(zz, -off), np.full_like(zz, w + off)]
             zs_ += [zz, zz]
+            ns += [np.tile([1.0, 0.0], (len(zz), 1)), np.tile([-1.0, 0.0], (len(zz), 1))]  # into the fluid
             yy = (np.arange(ny) + 0.5) * dx
             ws.append(yy)
             zs_.append(np.full_like(yy, -z - off))
-        yw, zw = np.concatenate(ws), np.concatenate(zs_)
+            ns.append(np.tile([0.0, 1.0], (len(yy), 1)))
+        yw, zw, nw = np.concatenate(ws), np.concatenate(zs_), np.vstack(ns)
         m = dx * dx
         fluid = get_particle_array(name='fluid', x=yf, y=zf, h=self.h, m=m, rho=1.0, p=-zf)
         walls = get_particle_array(name='walls', x=yw, y=zw, h=self.h, m=m, rho=1.0, p=0.0)
         hull = get_particle_array(name='hull', x=np.full(self.nmax, self.park[0]),
                                   y=np.full(self.nmax, self.park[1]), h=self.h, m=m, rho=1.0, p=0.0)
         self.scheme.setup_properties([fluid, walls, hull])
+        if 'nx' in walls.properties:
+            walls.nx[:], walls.ny[:] = nw[:, 0], nw[:, 1]
         fluid.p[:] = -zf
         if self.options.scheme == 'delta_sph':
             # The density that the linear state equation turns into the hydrostatic pressure.
