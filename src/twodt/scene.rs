@@ -473,20 +473,26 @@ mod tests {
         assert!(exact > (2.0 * estimated_hpj_over_d(fr) * d).sqrt());
     }
 
+    /// The Wigley hull at Fr 0.5 at the coarsest accepted spacing, D/dx 4, uniform: the hull, the case and D/L.
+    fn coarsest_wigley_scene() -> (Arc<HullSurface>, TwoDtConfig, f64) {
+        let spec = wigley::WigleySpec::default();
+        let hull = Arc::new(HullSurface::new(&wigley::wigley(&spec)));
+        let draft = hull.meta.draft_m / hull.meta.length_m;
+        let cfg = TwoDtConfig {
+            fr: 0.5,
+            dx: Some(draft / 4.0),
+            coarse_ratio: 1.0,
+            ..TwoDtConfig::default()
+        };
+        (hull, cfg, draft)
+    }
+
     /// The 3D ship pairs with a 2D+t run at the same spacing, `--dx (D/L)/res`; at D/dx 4 that is the bound
     /// itself. Regression: the bound was open, so `twodt --dx (D/L)/4` was refused and the 3D run at D/dx 4 had
     /// no 2D+t partner at its spacing.
     #[test]
     fn four_particles_over_the_draft_are_accepted_and_fewer_refused() {
-        let spec = wigley::WigleySpec::default();
-        let hull = Arc::new(HullSurface::new(&wigley::wigley(&spec)));
-        let draft = hull.meta.draft_m / hull.meta.length_m;
-        let mut cfg = TwoDtConfig {
-            fr: 0.5,
-            dx: Some(draft / 4.0),
-            ..TwoDtConfig::default()
-        };
-        cfg.coarse_ratio = 1.0;
+        let (hull, mut cfg, draft) = coarsest_wigley_scene();
         assert!(build(hull.clone(), &cfg).is_ok());
         cfg.dx = Some(draft / 3.9);
         let e = build(hull, &cfg)
@@ -499,15 +505,7 @@ mod tests {
     /// `--alpha` sets the solver's artificial viscosity (eq. 4.11); without it the solver's default stays.
     #[test]
     fn alpha_option_sets_the_artificial_viscosity_and_its_absence_keeps_the_default() {
-        let spec = wigley::WigleySpec::default();
-        let hull = Arc::new(HullSurface::new(&wigley::wigley(&spec)));
-        let draft = hull.meta.draft_m / hull.meta.length_m;
-        let mut cfg = TwoDtConfig {
-            fr: 0.5,
-            dx: Some(draft / 4.0),
-            coarse_ratio: 1.0,
-            ..TwoDtConfig::default()
-        };
+        let (hull, mut cfg, _) = coarsest_wigley_scene();
         let scene = build(hull.clone(), &cfg).expect("coarse Wigley scene");
         assert_eq!(scene.sim.cfg.viscosity, Viscosity::default());
         cfg.alpha = Some(0.04);
