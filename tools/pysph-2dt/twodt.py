@@ -132,9 +132,10 @@ class DeltaSphAdami(Scheme):
     density gradient, momentum with p_i + p_j written as p_i/rho_i^2 + p_j/rho_j^2, the artificial viscosity of
     eq. 4.11 on every fluid pair), linear state equation, assembled from PySPH's own delta-SPH equations; the walls
     are Adami et al.'s (2012): pressure extrapolated from the fluid with the wall's acceleration, density from it
-    by the state equation, the wall's prescribed velocity in the continuity equation, no viscosity with the walls
-    (free slip). The scheme differs from bowwave's in the wall condition only (and the kernel: PySPH's), so that
-    a difference that survives it is the wall's."""
+    by the state equation, the wall's prescribed velocity in the continuity equation. The viscous term with the
+    walls follows --wall-viscosity: off (none, the default), free-slip (the wall particles at the fluid's velocity
+    mirrored through the wall, as bowwave's ghosts) or on (at the wall's own velocity, a friction). With free-slip
+    the scheme differs from bowwave's in the wall's pressure condition, the kernel and the integrator."""
 
     def __init__(self, fluids, solids, dim, rho0, c0, h0, gy, alpha=0.02, delta=0.1):
         self.fluids, self.solids, self.dim = fluids, solids, dim
@@ -180,14 +181,12 @@ class DeltaSphAdami(Scheme):
                    ContinuityEquationDeltaSPH(dest=f, sources=self.fluids, c0=self.c0, delta=self.delta),
                    MomentumEquation(dest=f, sources=everything, c0=self.c0, alpha=0.0, beta=0.0, gy=self.gy),
                    MomentumEquationDeltaSPH(dest=f, sources=self.fluids, rho0=self.rho0, c0=self.c0,
-                                            alpha=self.alpha),
-                   ]
+                                            alpha=self.alpha)]
             if self.wall_viscosity != 'off':
-                g3 += [WallViscosity(dest=f, sources=self.solids, rho0=self.rho0, c0=self.c0, alpha=self.alpha,
-                                     free_slip=1.0 if self.wall_viscosity == 'free-slip' else 0.0)]
-            g3 += [
-                   # WCSPHStep moves a particle with (ax, ay, az), which XSPHCorrection sets: eps 0 is u itself.
-                   XSPHCorrection(dest=f, sources=[f], eps=0.0)]
+                g3.append(WallViscosity(dest=f, sources=self.solids, rho0=self.rho0, c0=self.c0, alpha=self.alpha,
+                                        free_slip=1.0 if self.wall_viscosity == 'free-slip' else 0.0))
+            # WCSPHStep moves a particle with (ax, ay, az), which XSPHCorrection sets: eps 0 is u itself.
+            g3.append(XSPHCorrection(dest=f, sources=[f], eps=0.0))
         return [Group(equations=g0, real=False), Group(equations=g1, real=False), Group(equations=g2),
                 Group(equations=g3)]
 
