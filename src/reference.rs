@@ -57,6 +57,10 @@ const FILES: &[(&str, &str)] = &[
         "trixi_p1_centre",
         include_str!("../data/reference/trixiparticles_wcsph_damBreak_P4_H600_80_400.csv"),
     ),
+    (
+        "openfoam_wall_sensors",
+        include_str!("../data/reference/openfoam_interfoam_damBreak_H80_free_slip_COMPUTED.csv"),
+    ),
 ];
 
 /// Parses an embedded reference file into a table (header kept as column names).

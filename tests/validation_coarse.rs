@@ -268,6 +268,30 @@ fn window_mean_of_a_ramp_is_its_midpoint_value() {
     assert!(validation::mean_over(&short, &[1.0, 1.0], 2.5, 3.0).is_nan());
 }
 
+/// OpenFOAM's interFoam run of the dam break (H/dx 80, free slip, tools/foam-dam-break/), as embedded: samples
+/// 0.005 t√(g/H) apart from 0, and the three quantities `validate dam-break` reports against it as reduce.py
+/// printed them: P1's first impact 2.726, P1's mean over [`validation::P1_RISE_WINDOW`] 0.114 and P0's over
+/// [`validation::CORNER_WINDOW`] 1.131 ρgH (studies/results/validation/LOG.md, session 42).
+#[test]
+fn openfoam_reference_reads_as_reduced() {
+    use bowwave::reference::{col, load, named};
+    let f = load("openfoam_wall_sensors");
+    let t = col(&f, 0);
+    assert!(t.len() > 700, "{} samples", t.len());
+    for (k, tk) in t.iter().enumerate() {
+        assert!((tk - 0.005 * k as f64).abs() < 1e-9, "t*[{k}] = {tk}");
+    }
+    let p1 = named(&f, "P1");
+    let impact = validation::impact_time(&t, &p1);
+    assert!((impact - 2.726).abs() < 0.005, "{impact}");
+    let (from, to) = validation::P1_RISE_WINDOW;
+    let rise = validation::mean_over(&t, &p1, from, to);
+    assert!((rise - 0.1139).abs() < 5e-4, "{rise}");
+    let (from, to) = validation::CORNER_WINDOW;
+    let corner = validation::mean_over(&t, &named(&f, "P0"), from, to);
+    assert!((corner - 1.1307).abs() < 5e-4, "{corner}");
+}
+
 /// TrixiParticles' reference runs at P1's centre, as embedded (`data/reference/`, transcribed from their JSON
 /// files): 701 samples 0.01 t√(g/H) apart from 0 to 7, water at the sensor from t* = 2.46 in both runs (the
 /// impact), and their rise converged between H/dx 80 and 400: means over [`validation::P1_RISE_WINDOW`] of

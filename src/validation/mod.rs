@@ -25,7 +25,7 @@ pub mod tank_3d;
 
 pub use dam_break::{
     cavity_summary, dam_break, first_rise, impact_time, mean_over, moving_average, trixi_p1_centre,
-    CAVITY_CLOSURE_T_STAR, IMPACT_LEVEL, IMPACT_SMOOTHING, P1_RISE_WINDOW,
+    CAVITY_CLOSURE_T_STAR, CORNER_WINDOW, IMPACT_LEVEL, IMPACT_SMOOTHING, P1_RISE_WINDOW,
 };
 pub use drops::{elliptic_drop, oscillating_drop};
 pub use hydrostatic::{hydrostatic, near_surface_pressure_error};
