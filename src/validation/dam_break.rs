@@ -180,28 +180,25 @@ pub const CORNER_WINDOW: (f64, f64) = (2.5, 3.5);
 fn openfoam_comparison(r: &RunResult, ts: &[f64], rise_from: f64, rise_to: f64) -> Vec<Check> {
     let foam = reference::load("openfoam_wall_sensors");
     let tf = reference::col(&foam, 0);
-    let mut out = vec![];
+    let report = |label: String, ours: f64, theirs: f64, error: f64| check(r, &label, ours, theirs, error, None);
     let p1 = col(r, "pstar_P1");
-    let (ours, theirs) = (impact_time(ts, &p1), impact_time(&tf, &named(&foam, "P1")));
-    out.push(check(
-        r,
-        "P1 first impact vs OpenFOAM interFoam (VOF, free slip) H/dx=80, |diff|",
+    let foam_p1 = named(&foam, "P1");
+    let (ours, theirs) = (impact_time(ts, &p1), impact_time(&tf, &foam_p1));
+    let mut out = vec![report(
+        "P1 first impact vs OpenFOAM interFoam (VOF, free slip) H/dx=80, |diff|".into(),
         ours,
         theirs,
         (ours - theirs).abs(),
-        None,
-    ));
+    )];
     let (ours, theirs) = (
         mean_over(ts, &p1, rise_from, rise_to),
-        mean_over(&tf, &named(&foam, "P1"), rise_from, rise_to),
+        mean_over(&tf, &foam_p1, rise_from, rise_to),
     );
-    out.push(check(
-        r,
-        &format!("P1 mean p* over t* in [{rise_from},{rise_to}] vs OpenFOAM interFoam H/dx=80, |diff|"),
+    out.push(report(
+        format!("P1 mean p* over t* in [{rise_from},{rise_to}] vs OpenFOAM interFoam H/dx=80, |diff|"),
         ours,
         theirs,
         (ours - theirs).abs(),
-        None,
     ));
     if let Some(p0) = r.series.column("pstar_P0") {
         let (from, to) = CORNER_WINDOW;
@@ -209,13 +206,11 @@ fn openfoam_comparison(r: &RunResult, ts: &[f64], rise_from: f64, rise_to: f64) 
             mean_over(ts, &p0, from, to),
             mean_over(&tf, &named(&foam, "P0"), from, to),
         );
-        out.push(check(
-            r,
-            &format!("P0 (the corner) mean p* over t* in [{from},{to}] vs OpenFOAM interFoam H/dx=80, relative"),
+        out.push(report(
+            format!("P0 (the corner) mean p* over t* in [{from},{to}] vs OpenFOAM interFoam H/dx=80, relative"),
             ours,
             theirs,
             (ours - theirs).abs() / theirs,
-            None,
         ));
     }
     out

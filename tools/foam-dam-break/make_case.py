@@ -44,6 +44,18 @@ def write(root, rel, cls, body):
         f.write(body)
 
 
+WALLS = ("leftWall", "rightWall", "lowerWall")
+
+
+def field(dims, internal, wall, atmosphere):
+    """A field file's body: `wall` (the entries inside each wall's braces) on the three walls, `atmosphere` on
+    the open top, empty front and back."""
+    body = f"dimensions {dims};\n\ninternalField uniform {internal};\n\nboundaryField\n{{\n"
+    for name, entry in [(w, wall) for w in WALLS] + [("atmosphere", atmosphere)]:
+        body += f"    {name}\n    {{\n        {entry}\n    }}\n"
+    return body + "    frontAndBack\n    {\n        type empty;\n    }\n}\n"
+
+
 def block_mesh(res):
     dx = H / res
     nx1 = int(round(COLUMN / dx))
@@ -109,26 +121,16 @@ def main():
     mesh, dx, _ = block_mesh(a.res)
     write(root, "system/blockMeshDict", "dictionary", mesh)
 
-    wall_u = "slip;" if a.walls == "slip" else "noSlip;"
-    walls = ("leftWall", "rightWall", "lowerWall")
-    u = "dimensions [0 1 -1 0 0 0 0];\n\ninternalField uniform (0 0 0);\n\nboundaryField\n{\n"
-    for w in walls:
-        u += f"    {w}\n    {{\n        type {wall_u}\n    }}\n"
-    u += "    atmosphere\n    {\n        type pressureInletOutletVelocity;\n        value uniform (0 0 0);\n    }\n"
-    u += "    frontAndBack\n    {\n        type empty;\n    }\n}\n"
-    write(root, "0/U", "volVectorField", u)
-    p = "dimensions [1 -1 -2 0 0 0 0];\n\ninternalField uniform 0;\n\nboundaryField\n{\n"
-    for w in walls:
-        p += f"    {w}\n    {{\n        type fixedFluxPressure;\n        value uniform 0;\n    }}\n"
-    p += "    atmosphere\n    {\n        type totalPressure;\n        p0 uniform 0;\n    }\n"
-    p += "    frontAndBack\n    {\n        type empty;\n    }\n}\n"
-    write(root, "0/p_rgh", "volScalarField", p)
-    al = "dimensions [0 0 0 0 0 0 0];\n\ninternalField uniform 0;\n\nboundaryField\n{\n"
-    for w in walls:
-        al += f"    {w}\n    {{\n        type zeroGradient;\n    }}\n"
-    al += "    atmosphere\n    {\n        type inletOutlet;\n        inletValue uniform 0;\n        value uniform 0;\n    }\n"
-    al += "    frontAndBack\n    {\n        type empty;\n    }\n}\n"
-    write(root, "0/alpha.water", "volScalarField", al)
+    wall_u = "slip" if a.walls == "slip" else "noSlip"
+    write(root, "0/U", "volVectorField",
+          field("[0 1 -1 0 0 0 0]", "(0 0 0)", f"type {wall_u};",
+                "type pressureInletOutletVelocity;\n        value uniform (0 0 0);"))
+    write(root, "0/p_rgh", "volScalarField",
+          field("[1 -1 -2 0 0 0 0]", "0", "type fixedFluxPressure;\n        value uniform 0;",
+                "type totalPressure;\n        p0 uniform 0;"))
+    write(root, "0/alpha.water", "volScalarField",
+          field("[0 0 0 0 0 0 0]", "0", "type zeroGradient;",
+                "type inletOutlet;\n        inletValue uniform 0;\n        value uniform 0;"))
 
     write(root, "constant/g", "uniformDimensionedVectorField",
           f"dimensions [0 1 -2 0 0 0 0];\nvalue (0 {-G} 0);\n")
@@ -144,16 +146,10 @@ def main():
         for name, dims, value, wall in (("k", "[0 2 -2 0 0 0 0]", 1e-6, "kqRWallFunction"),
                                         ("omega", "[0 0 -1 0 0 0 0]", 1.0, "omegaWallFunction"),
                                         ("nut", "[0 2 -1 0 0 0 0]", 0.0, "nutkWallFunction")):
-            f = f"dimensions {dims};\n\ninternalField uniform {value};\n\nboundaryField\n{{\n"
-            for w in walls:
-                f += f"    {w}\n    {{\n        type {wall};\n        value uniform {value};\n    }}\n"
-            if name == "nut":
-                f += "    atmosphere\n    {\n        type calculated;\n        value uniform 0;\n    }\n"
-            else:
-                f += (f"    atmosphere\n    {{\n        type inletOutlet;\n        inletValue uniform {value};\n"
-                      f"        value uniform {value};\n    }}\n")
-            f += "    frontAndBack\n    {\n        type empty;\n    }\n}\n"
-            write(root, f"0/{name}", "volScalarField", f)
+            top = ("type calculated;\n        value uniform 0;" if name == "nut" else
+                   f"type inletOutlet;\n        inletValue uniform {value};\n        value uniform {value};")
+            write(root, f"0/{name}", "volScalarField",
+                  field(dims, value, f"type {wall};\n        value uniform {value};", top))
 
     # Wall pressure on the right wall: a patch probe at every face centre from the floor to 0.45 m.
     n_probe = int(0.45 / dx)
