@@ -51,6 +51,9 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
                     points: xy(&reference::col(&b, 0), &reference::col(&b, 1)),
                     style: Style::Markers,
                 });
+                if probe == "P1" {
+                    series.push(openfoam_series("P1", "OpenFOAM interFoam (VOF) H/dx=80, 90 mm"));
+                }
                 let p = dir.join(format!("dam-break_{probe}.png"));
                 line_plot(
                     &p,
@@ -85,6 +88,7 @@ pub fn plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::PathBuf
                     ),
                     style: Style::Line,
                 });
+                series.push(openfoam_series("P1c", "OpenFOAM interFoam (VOF) H/dx=80, 8.4 mm"));
                 let p = dir.join("dam-break_P1c.png");
                 line_plot(
                     &p,
@@ -358,4 +362,14 @@ fn sloshing_plots(r: &RunResult, dir: &Path) -> anyhow::Result<Vec<std::path::Pa
         files.push(p);
     }
     Ok(files)
+}
+
+/// One sensor of OpenFOAM's free-slip dam break (H/dx 80, the `openfoam_wall_sensors` reference) as a curve.
+fn openfoam_series(sensor: &str, name: &str) -> Series {
+    let f = reference::load("openfoam_wall_sensors");
+    Series {
+        name: name.into(),
+        points: reference::col(&f, 0).into_iter().zip(named(&f, sensor)).collect(),
+        style: Style::Line,
+    }
 }
