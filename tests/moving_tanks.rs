@@ -56,7 +56,7 @@ fn a_tank_in_heave_weighs_its_water_with_the_effective_gravity() {
 
 /// The heave with particle shifting. When the shift's normal part was kept under the surface layer it lifted
 /// the water (its centre of mass rose by 0.024 dx in 5 s in a still tank) and the mean floor pressure read 0.7 %
-/// above the weight (session 27); measured now: −0.07 %.
+/// above the weight (session 27); measured now: −0.09 %.
 #[test]
 fn a_heaving_tank_is_shifted_as_a_still_one() {
     heave("sun2017");
@@ -198,7 +198,7 @@ fn a_slowly_rolling_tank_keeps_its_water_level() {
 
 /// The roll with particle shifting (see [`a_heaving_tank_is_shifted_as_a_still_one`]): the sensor drifted
 /// upwards, +0.73 / +1.20 / +1.76 % over the three windows, while the shift lifted the water under its surface;
-/// measured now: +0.35 / +0.38 / +0.67 %.
+/// measured now: +0.38 / +0.41 / +0.65 %.
 #[test]
 fn a_slowly_rolling_tank_is_shifted_as_a_still_one() {
     roll("sun2017");
