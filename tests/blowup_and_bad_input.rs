@@ -112,8 +112,42 @@ fn bad_phases_name_the_field() {
             good.replace("background_pressure = 982.0", "background_pressure = -1.0"),
             "multi_fluid.background_pressure",
         ),
+        (
+            format!("{good}\n[numerics]\nshifting = \"sun2017\"\n"),
+            "numerics.shifting",
+        ),
     ];
     assert_each_refused_naming(&cases);
+}
+
+/// Regression (session 43): particle shifting with several phases moved particles across the interface (the
+/// two-layer tank's floor 0.49 ρ_w g H off, the 2D+t still tank with air stirred to E_K/(MgD) 1.9e-4). It is
+/// refused wherever it can be asked for: a case file (above), `--shifting` on a case with phases, and a 2D+t
+/// run with an air layer.
+#[test]
+fn particle_shifting_with_several_phases_is_refused() {
+    use bowwave::cases::overrides::CaseOverrides;
+    use bowwave::sph::particle_shifting::ParticleShifting;
+    let mut case = cases::load("two-layer").unwrap();
+    let shift = CaseOverrides {
+        shifting: Some(ParticleShifting::Sun2017),
+        ..Default::default()
+    };
+    let e = shift.apply(&mut case).expect_err("shifting with phases").to_string();
+    assert!(e.contains("--shifting") && e.contains("two-layer"), "{e}");
+    assert_eq!(case.numerics.shifting, ParticleShifting::None, "refused, so unchanged");
+    let none = CaseOverrides {
+        shifting: Some(ParticleShifting::None),
+        ..Default::default()
+    };
+    none.apply(&mut case).expect("`none` is what is expected");
+    let cfg = bowwave::twodt::config::TwoDtConfig {
+        air: Some(1.5),
+        shifting: ParticleShifting::Sun2017,
+        ..Default::default()
+    };
+    let e = cfg.check().expect_err("an air layer with shifting");
+    assert_eq!(e.option, bowwave::twodt::config::ConfigOption::Air, "{e}");
 }
 
 #[test]

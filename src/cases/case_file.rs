@@ -656,6 +656,15 @@ impl CaseFile {
                 "a non-negative ε_I (Grenier et al.: 0.01–0.1; 0 is off)",
             ));
         }
+        if !self.phases.is_empty() && self.numerics.shifting != crate::sph::particle_shifting::ParticleShifting::None {
+            return Err(err(
+                "numerics.shifting",
+                &format!(
+                    "`none` with `[[phases]]`: {}",
+                    crate::sph::particle_shifting::WITH_PHASES
+                ),
+            ));
+        }
         if self.probes.interface_tips && self.phases.is_empty() {
             return Err(err(
                 "probes.interface_tips",

@@ -19,12 +19,19 @@ pub struct CaseOverrides {
 }
 
 impl CaseOverrides {
-    /// Writes the given settings into `case`.
-    pub fn apply(&self, case: &mut CaseFile) {
+    /// Writes the given settings into `case`; refuses particle shifting for a case with several phases.
+    pub fn apply(&self, case: &mut CaseFile) -> anyhow::Result<()> {
         if let Some(kind) = self.ghosts {
             case.set_ghosts(kind);
         }
         if let Some(s) = self.shifting {
+            if s != ParticleShifting::None && !case.phases.is_empty() {
+                anyhow::bail!(
+                    "--shifting {s}: case `{}` has `[[phases]]`; expected {}",
+                    case.name,
+                    crate::sph::particle_shifting::WITH_PHASES
+                );
+            }
             case.numerics.shifting = s;
         }
         if let Some(nu) = self.nu {
@@ -33,5 +40,6 @@ impl CaseOverrides {
         if let Some(w) = self.wall_slip {
             case.numerics.wall_slip = w;
         }
+        Ok(())
     }
 }

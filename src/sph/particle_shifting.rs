@@ -56,6 +56,12 @@ impl std::fmt::Display for ParticleShifting {
     }
 }
 
+/// Why particle shifting and several phases are refused together (a case's `[[phases]]`, the 2D+t air layer):
+/// what is expected instead.
+pub const WITH_PHASES: &str = "no particle shifting with it (`shifting = none`): the shift of Sun et al. (2017) \
+is single-phase and moves particles across the interface between phases (with it the two-layer tank's floor \
+read 0.49 ρ_w g H off)";
+
 /// A of δr = −A h U_max Δt Σ…: (2h)²/h² = 4 (Sun et al. 2017), dimensionless.
 pub const A: f64 = 4.0;
 /// R of the anti-clumping term (Sun et al. 2017: 0.2), dimensionless.

@@ -518,6 +518,13 @@ impl TwoDtConfig {
         if !(self.air_background >= 0.0 && self.air_background <= 10.0) {
             return fail(O::AirBackground, "in [0, 10]", &self.air_background);
         }
+        if self.air.is_some() && self.shifting != ParticleShifting::None {
+            return fail(
+                O::Air,
+                crate::sph::particle_shifting::WITH_PHASES,
+                &"an air layer with particle shifting",
+            );
+        }
         Ok(())
     }
 

@@ -306,7 +306,7 @@ pub fn validate_cli(
             continue;
         }
         let mut c = cases::load(n)?;
-        overrides.apply(&mut c);
+        overrides.apply(&mut c)?;
         let res = res.or(full_resolution(n));
         eprintln!(
             "validating {n} at resolution {:.0} ...",

@@ -64,7 +64,7 @@ impl RunArgs {
             nu: self.nu,
             wall_slip: self.wall_slip,
         }
-        .apply(&mut case);
+        .apply(&mut case)?;
         let out = self.out.unwrap_or_else(|| PathBuf::from("out").join(&case.name));
         let opts = cases::run::RunOptions {
             res: self.res,
