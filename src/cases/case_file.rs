@@ -657,13 +657,7 @@ impl CaseFile {
             ));
         }
         if !self.phases.is_empty() && self.numerics.shifting != crate::sph::particle_shifting::ParticleShifting::None {
-            return Err(err(
-                "numerics.shifting",
-                &format!(
-                    "`none` with `[[phases]]`: {}",
-                    crate::sph::particle_shifting::WITH_PHASES
-                ),
-            ));
+            return Err(err("numerics.shifting", crate::sph::particle_shifting::WITH_PHASES));
         }
         if self.probes.interface_tips && self.phases.is_empty() {
             return Err(err(

@@ -8,8 +8,8 @@
 //! ([`super::free_surface`]): λ ≤ 0.2 no shift; the tangential part for a surface particle (λ ≤ 0.75: every
 //! free-surface particle and the layer under it) and for every particle within a kernel support of one (the
 //! surface's vicinity, as in the paper), whose sum the surface truncates: its normal part points out of the
-//! water and would lift the layers under the surface, which in a still tank raised the wall pressure by 0.35 %
-//! in 5 s; all of it elsewhere. The density is carried to the new
+//! water and would lift the layers under the surface (docs/reference/method.md, "Particle shifting"); all of
+//! it elsewhere. The density is carried to the new
 //! position to first order with the renormalised gradient of eq. (4.19) (ρ_i += ∇ρ_i · δr_i); the velocity is
 //! not corrected (the paper's simple form).
 //!
@@ -59,8 +59,7 @@ impl std::fmt::Display for ParticleShifting {
 /// Why particle shifting and several phases are refused together (a case's `[[phases]]`, the 2D+t air layer):
 /// what is expected instead.
 pub const WITH_PHASES: &str = "no particle shifting with it (`shifting = none`): the shift of Sun et al. (2017) \
-is single-phase and moves particles across the interface between phases (with it the two-layer tank's floor \
-read 0.49 ρ_w g H off)";
+is single-phase and moves particles across the interface between phases";
 
 /// A of δr = −A h U_max Δt Σ…: (2h)²/h² = 4 (Sun et al. 2017), dimensionless.
 pub const A: f64 = 4.0;
