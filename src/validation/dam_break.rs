@@ -175,9 +175,10 @@ pub fn impact_peak(t: &[f64], p: &[f64], from: f64, to: f64) -> f64 {
 /// (studies/results/validation/LOG.md, session 42).
 pub const CORNER_WINDOW: (f64, f64) = (2.5, 3.5);
 
-/// bowwave's P1 first impact, P1's mean over the rise window and P0's over [`CORNER_WINDOW`] beside the same
+/// bowwave's P1 first impact, P1's mean over [`P1_RISE_WINDOW`] and P0's over [`CORNER_WINDOW`] beside the same
 /// quantities of OpenFOAM's interFoam run (H/dx 80, free slip; `openfoam_wall_sensors`), each a reported line.
-fn openfoam_comparison(r: &RunResult, ts: &[f64], rise_from: f64, rise_to: f64) -> Vec<Check> {
+fn openfoam_comparison(r: &RunResult, ts: &[f64]) -> Vec<Check> {
+    let (rise_from, rise_to) = P1_RISE_WINDOW;
     let foam = reference::load("openfoam_wall_sensors");
     let tf = reference::col(&foam, 0);
     let report = |label: String, ours: f64, theirs: f64, error: f64| check(r, &label, ours, theirs, error, None);
@@ -323,7 +324,7 @@ pub fn dam_break(r: &RunResult) -> Vec<Check> {
     // A code that is not SPH on the same 2D free-slip problem: OpenFOAM's interFoam (VOF, with air) at H/dx 80,
     // its sensors formed from the wall's face pressures as ours (tools/foam-dam-break/, data/reference/SOURCES.md).
     // Reported, no tolerance: it tells a defect of the method from the physics of the model (issue #35).
-    out.extend(openfoam_comparison(r, &ts, window_from, window_to));
+    out.extend(openfoam_comparison(r, &ts));
     // P1 and P2 read at Greco's (2001) placement, the sensors' tops at Buchner's centres (Adami et al. 2012,
     // TrixiParticles' Marrone set-up): reported beside the checks above, which keep the nominal positions.
     for (probe, (tm, pm)) in [("P1g", &marrone_p1), ("P2g", &marrone_p2)] {
