@@ -2,6 +2,7 @@
 //! against its effective gravity, and the motion section's bad input.
 
 use bowwave::cases::{self, case_file::CaseFile, run};
+use bowwave::sph::particle_shifting::ParticleShifting;
 use bowwave::validation::{self, sloshing::harmonic_fit};
 
 fn run_case(case: &CaseFile, res: Option<f64>) -> run::RunResult {
@@ -39,19 +40,9 @@ fn sloshing_in_sway_at_resonance_follows_linear_theory() {
 /// with the tank) reads ρ h (g + ÿ) at the forcing frequency, ρ h A ω² cos ωt, within 5 % over t = T to 3T, the
 /// mean within 0.5 % of the weight. The sudden start (ÿ(0) = Aω²) rings acoustically, about ±7 % of ρgh at
 /// H/dx 20: the fit at ω filters it. Measured: 97.5 % of ρ h A ω², in phase (sine part 0.02 % of it).
-/// The case text with particle shifting `shifting` in its `[numerics]` (added if it has none).
-fn with_shifting(text: &str, shifting: &str) -> String {
-    let line = format!("shifting = \"{shifting}\"");
-    if text.contains("\n[numerics]") {
-        text.replacen("\n[numerics]", &format!("\n[numerics]\n{line}\n#"), 1)
-    } else {
-        format!("{text}\n[numerics]\n{line}\n")
-    }
-}
-
 #[test]
 fn a_tank_in_heave_weighs_its_water_with_the_effective_gravity() {
-    heave("none");
+    heave(ParticleShifting::None);
 }
 
 /// The heave with particle shifting. When the shift's normal part was kept under the surface layer it lifted
@@ -59,11 +50,11 @@ fn a_tank_in_heave_weighs_its_water_with_the_effective_gravity() {
 /// above the weight (session 27); measured now: −0.09 %.
 #[test]
 fn a_heaving_tank_is_shifted_as_a_still_one() {
-    heave("sun2017");
+    heave(ParticleShifting::Sun2017);
 }
 
-fn heave(shifting: &str) {
-    let text = with_shifting(cases::builtin::builtin_text("hydrostatic").unwrap(), shifting);
+fn heave(shifting: ParticleShifting) {
+    let text = cases::builtin::builtin_text("hydrostatic").unwrap();
     let (a, period) = (0.0994, 2.0); // ÿ up to 0.1 g
     let text = text
         .replace(
@@ -78,7 +69,8 @@ fn heave(shifting: &str) {
             "position = [1.0, 0.0]\nsize = 0.2",
         )
         .replace("end_time = 15.97", "end_time = 6.0");
-    let case = CaseFile::parse(&text, "heave test").unwrap();
+    let mut case = CaseFile::parse(&text, "heave test").unwrap();
+    case.numerics.shifting = shifting;
     assert!(case.walls[0].motion.is_some());
     let r = run_case(&case, Some(20.0));
     let t = r.series.column("t").unwrap();
@@ -193,7 +185,7 @@ fn a_motion_table_must_cover_the_run() {
 /// ghosts, the sensor carried by the wall and the Neumann condition with the rotation's acceleration together.
 #[test]
 fn a_slowly_rolling_tank_keeps_its_water_level() {
-    roll("none");
+    roll(ParticleShifting::None);
 }
 
 /// The roll with particle shifting (see [`a_heaving_tank_is_shifted_as_a_still_one`]): the sensor drifted
@@ -201,11 +193,12 @@ fn a_slowly_rolling_tank_keeps_its_water_level() {
 /// measured now: +0.38 / +0.41 / +0.65 %.
 #[test]
 fn a_slowly_rolling_tank_is_shifted_as_a_still_one() {
-    roll("sun2017");
+    roll(ParticleShifting::Sun2017);
 }
 
-fn roll(shifting: &str) {
-    let text = with_shifting(cases::builtin::builtin_text("sloshing-deep").unwrap(), shifting)
+fn roll(shifting: ParticleShifting) {
+    let text = cases::builtin::builtin_text("sloshing-deep")
+        .unwrap()
         .replace(
             "motion = { sway = { amplitude = 0.005, period = 1.181825, phase = -90.0 } }",
             "motion = { roll = { amplitude = 2.0, period = 12.0, phase = -90.0 } }",
@@ -213,7 +206,8 @@ fn roll(shifting: &str) {
         .replace("position = [-0.5, 0.4]", "position = [0.5, 0.2]")
         .replace("end_time = 3.545", "end_time = 6.0")
         .replace("series_every = 0.01", "series_every = 0.05");
-    let case = CaseFile::parse(&text, "roll test").unwrap();
+    let mut case = CaseFile::parse(&text, "roll test").unwrap();
+    case.numerics.shifting = shifting;
     let r = run_case(&case, Some(15.0));
     let t = r.series.column("t").unwrap();
     let p = r.series.column("p_left").unwrap();
