@@ -131,8 +131,11 @@ fn static_pressure(y0: f64, y1: f64) -> f64 {
 }
 
 /// Largest relative error of the face sensors of a run at its first row (the hydrostatic start, against
-/// ρ0 g (H − y)) and its last (t√(g/H) = 10, against the static solution), and the run.
-fn face_errors(res: f64, widths: &[f64]) -> (f64, f64, run::RunResult) {
+/// ρ0 g (H − y)), the largest settled error per width (the mean pressure over the run's second half,
+/// t√(g/H) 5–10, from the impulse every step gathers, against the static solution), and the run. Settled, not
+/// the last row: the tank keeps an acoustic oscillation of about ±0.6 % (period 4H/c0 = 0.4 √(H/g), which the
+/// rows 1.0 √(H/g) apart alias), and a single row reads its phase, not the sensor's error.
+fn face_errors(res: f64, widths: &[f64]) -> (f64, Vec<f64>, run::RunResult) {
     let dx = 1.0 / res;
     let case = tank_with_faces(dx, widths);
     let opts = run::RunOptions {
@@ -141,38 +144,49 @@ fn face_errors(res: f64, widths: &[f64]) -> (f64, f64, run::RunResult) {
     };
     let r = run::run(&case, &opts).unwrap();
     assert!(r.blowup.is_none(), "{:?}", r.blowup);
-    let (mut start, mut settled) = (0.0f64, 0.0f64);
-    for w in widths {
+    let (mut start, mut settled) = (0.0f64, vec![0.0f64; widths.len()]);
+    for (k, w) in widths.iter().enumerate() {
         let size = w * dx;
         for (name, y0, y1) in [("side", SIDE_Y - 0.5 * size, SIDE_Y + 0.5 * size), ("floor", 0.0, 0.0)] {
             let col = r.series.column(&format!("p_{name}{w}")).unwrap();
             let initial = 1000.0 * 9.81 * (1.0 - 0.5 * (y0 + y1));
             start = start.max((col[0] / initial - 1.0).abs());
-            settled = settled.max((col[col.len() - 1] / static_pressure(y0, y1) - 1.0).abs());
+            let t = r.series.column("t").unwrap();
+            let impulse = r.series.column(&format!("pimpulse_{name}{w}")).unwrap();
+            let (n, half) = (t.len(), t.len() / 2);
+            let mean = impulse[half + 1..].iter().sum::<f64>() / (t[n - 1] - t[half]);
+            settled[k] = settled[k].max((mean / static_pressure(y0, y1) - 1.0).abs());
         }
     }
     (start, settled, r)
 }
 
-/// Issue #36: a face sensor of 0.5 to 20 spacings reads the integrated hydrostatic pressure within 0.5 % (at
-/// H/dx 40 a face of 20 spacings is half the depth; at 20, up to 10 fit). At the hydrostatic start, where the
-/// field is exactly ρ0 g (H − y), within 0.05 % (measured: 0.024 % and 0.012 %); after settling to
-/// t√(g/H) = 10 within 0.5 % of the static solution (measured 0.45 % and 0.34 %: the settled field's own
-/// error, which falls as the spacing does).
+/// Issue #36: a face sensor of 0.5 to 20 spacings reads the integrated hydrostatic pressure (at H/dx 40 a face
+/// of 20 spacings is half the depth; at 20, up to 10 fit). At the hydrostatic start, where the field is exactly
+/// ρ0 g (H − y), within 0.05 % (measured: 0.024 % and 0.012 %); settled (the mean over t√(g/H) 5–10) within
+/// 0.25 % of the static solution (measured 0.18 % and 0.10 %; with particle shifting 0.12 % and 0.15 %), and closer
+/// at H/dx 40 than at 20 on the same widths. Regression: the settled reading was the last row's, within 0.5 %,
+/// which read the phase of the tank's acoustic oscillation (±0.6 %): with shifting 0.55 % and 0.57 %, not
+/// closer at 40 than at 20 (session 44).
 #[test]
 fn face_sensors_half_to_twenty_spacings_wide_read_the_integrated_hydrostatic_pressure() {
+    let largest = |e: &[f64]| e.iter().cloned().fold(0.0, f64::max);
     let (start20, settled20, _) = face_errors(20.0, &WIDTHS[..5]);
     let (start40, settled40, r) = face_errors(40.0, &WIDTHS);
-    eprintln!("face sensors, largest error: start {start20:.2e} (H/dx 20), {start40:.2e} (40); settled {settled20:.2e}, {settled40:.2e}");
+    let (settled20, settled40_same, settled40) = (largest(&settled20), largest(&settled40[..5]), largest(&settled40));
+    eprintln!("face sensors, largest error: start {start20:.2e} (H/dx 20), {start40:.2e} (40); settled {settled20:.2e}, {settled40:.2e} ({settled40_same:.2e} on H/dx 20's widths)");
     assert!(
         start20 < 5e-4 && start40 < 5e-4,
         "at the start: {start20:.2e}, {start40:.2e}"
     );
     assert!(
-        settled20 < 5e-3 && settled40 < 5e-3,
+        settled20 < 2.5e-3 && settled40 < 2.5e-3,
         "settled: {settled20:.2e}, {settled40:.2e}"
     );
-    assert!(settled40 < settled20, "converges: {settled20:.2e} then {settled40:.2e}");
+    assert!(
+        settled40_same < settled20,
+        "converges: {settled20:.2e} then {settled40_same:.2e}"
+    );
     // Peak and impulse between outputs, from every step: the peak is at least the readings at both ends of its
     // interval and the interval's mean pressure (impulse / length); over the whole run the mean pressure is the
     // static one, within the 0.5 % the readings oscillate by while the tank settles.
