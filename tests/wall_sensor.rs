@@ -144,6 +144,8 @@ fn face_errors(res: f64, widths: &[f64]) -> (f64, Vec<f64>, run::RunResult) {
     };
     let r = run::run(&case, &opts).unwrap();
     assert!(r.blowup.is_none(), "{:?}", r.blowup);
+    let t = r.series.column("t").unwrap();
+    let (n, half) = (t.len(), t.len() / 2);
     let (mut start, mut settled) = (0.0f64, vec![0.0f64; widths.len()]);
     for (k, w) in widths.iter().enumerate() {
         let size = w * dx;
@@ -151,9 +153,7 @@ fn face_errors(res: f64, widths: &[f64]) -> (f64, Vec<f64>, run::RunResult) {
             let col = r.series.column(&format!("p_{name}{w}")).unwrap();
             let initial = 1000.0 * 9.81 * (1.0 - 0.5 * (y0 + y1));
             start = start.max((col[0] / initial - 1.0).abs());
-            let t = r.series.column("t").unwrap();
             let impulse = r.series.column(&format!("pimpulse_{name}{w}")).unwrap();
-            let (n, half) = (t.len(), t.len() / 2);
             let mean = impulse[half + 1..].iter().sum::<f64>() / (t[n - 1] - t[half]);
             settled[k] = settled[k].max((mean / static_pressure(y0, y1) - 1.0).abs());
         }
