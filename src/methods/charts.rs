@@ -16,8 +16,22 @@ use std::path::{Path, PathBuf};
 /// no gradient correction), `wcsph` (no density diffusion), `wendland` (Wendland C2 kernel, h = 2 dx),
 /// `pc` (predictor–corrector at its default CFL), `table`/`exact-kernel` (tabulated or exact kernel gradient),
 /// `images`/`fixed-ghosts` (every wall's straight sides as image ghosts, or the fixed lattice), or `alpha=A`,
-/// `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter.
+/// `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter. Names joined by `+` apply in turn, left to right
+/// (`wendland+h=1.4`: the Wendland kernel at h = 1.4 dx).
 pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
+    if name.contains('+') {
+        for part in name.split('+') {
+            if part.is_empty() {
+                anyhow::bail!("variant `{name}`: an empty name between `+` signs");
+            }
+            apply_one_variant(case, part)?;
+        }
+        return Ok(());
+    }
+    apply_one_variant(case, name)
+}
+
+fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
     let ghosts = match name {
         "images" => Some(GhostKind::Images),
         "fixed-ghosts" => Some(GhostKind::Fixed),
@@ -523,6 +537,26 @@ mod tests {
         for bad in ["h=0", "h=-1", "h=100", "cfl=0", "cfl=x", "speed=2", "gauss"] {
             let e = apply_variant(&mut c, bad).unwrap_err().to_string();
             assert!(e.contains(bad) && e.contains("expected"), "{e}");
+        }
+    }
+
+    #[test]
+    fn variants_joined_by_plus_apply_left_to_right() {
+        let mut c = crate::cases::load("dam-break").unwrap();
+        apply_variant(&mut c, "wendland+h=1.4+cfl=1.5").unwrap();
+        let n = &c.numerics;
+        assert_eq!(n.kernel, KernelKind::WendlandC2);
+        assert_eq!(n.h_over_dx, Some(1.4), "h after wendland keeps its value");
+        assert_eq!(n.cfl, Some(1.5));
+        // In the other order `wendland` resets h to its own default.
+        apply_variant(&mut c, "h=1.4+wendland").unwrap();
+        assert_eq!(c.numerics.h_over_dx, None);
+        for bad in ["wendland+", "+h=1.4", "wendland++h=1.4", "wendland+gauss"] {
+            let e = apply_variant(&mut c, bad).unwrap_err().to_string();
+            assert!(
+                e.contains("variant") && (e.contains("empty") || e.contains("expected")),
+                "{bad}: {e}"
+            );
         }
     }
 

@@ -10,7 +10,7 @@
 //! ghosts are those of the rectangular polyline tank, mirror for mirror (test
 //! `two_dimensional_box_has_the_ghosts_of_the_rectangular_polyline_tank`).
 
-use super::boundary::{Boundary, GhostGeometry, Mirror};
+use super::boundary::{image_reach, Boundary, GhostGeometry, Mirror};
 use super::polyline_wall::GhostKind;
 use nalgebra::SVector;
 
@@ -164,7 +164,8 @@ impl<const D: usize> Boundary<D> for BoxWall<D> {
         out.append(&self.base);
     }
     /// With [`GhostKind::Images`]: every particle within the support of a wall face, over that face (inside
-    /// the tank along the other axes, so not above the side walls' top), gets its image through the face.
+    /// the tank along the other axes, so not above the side walls' top), gets its image through the face, if
+    /// the image can touch the fluid ([`image_reach`]).
     fn images(&self, _t: f64, pos: &[SVector<f64, D>], out: &mut GhostGeometry<D>, source: &mut Vec<usize>) {
         if self.kind != GhostKind::Images {
             return;
@@ -175,13 +176,16 @@ impl<const D: usize> Boundary<D> for BoxWall<D> {
                     continue; // the open top
                 }
                 let face = if upper { self.hi[k] } else { self.lo[k] };
+                let depth_of = |x: &SVector<f64, D>| if upper { face - x[k] } else { x[k] - face };
+                let nearest = pos.iter().map(depth_of).fold(f64::INFINITY, f64::min);
+                let reach = image_reach(self.support, nearest);
                 for (j, x) in pos.iter().enumerate() {
-                    let depth = if upper { face - x[k] } else { x[k] - face };
+                    let depth = depth_of(x);
                     // Over the face: inside the tank along the other axes (the side walls end at the top).
                     let over = (0..D)
                         .filter(|&a| a != k)
                         .all(|a| x[a] >= self.lo[a] && x[a] <= self.hi[a]);
-                    if depth <= 0.0 || depth >= self.support || !over {
+                    if depth <= 0.0 || depth >= reach || !over {
                         continue;
                     }
                     let mut image = *x;
@@ -305,6 +309,75 @@ mod tests {
         assert!((images[0].0 + 0.15).abs() < 1e-12 && (images[0].1 - 0.05).abs() < 1e-12);
         assert!((images[1].0 - 0.15).abs() < 1e-12 && (images[1].1 + 0.05).abs() < 1e-12);
         assert!(out.interp.iter().all(|x| *x == pos[0]) && out.mirror.iter().all(|m| *m == Mirror::Plane));
+    }
+
+    /// Oracle for the images' reach (`image_reach`) in 3D: on a jittered lattice in the tank, every image a
+    /// brute-force search finds within the support of some particle is made, every image made is one the full
+    /// support would make, and fewer are made than the full support would.
+    #[test]
+    fn box_images_are_made_where_they_touch_the_fluid_and_nowhere_deeper() {
+        let (dx, support) = (0.1, 0.399);
+        let hi = Vector3::new(1.0, 0.6, 1.0);
+        let b = BoxWall::new("tank", Vector3::zeros(), hi, dx, support)
+            .unwrap()
+            .with_ghosts(GhostKind::Images);
+        let mut seed = 777u64;
+        let mut jitter = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.2 * dx
+        };
+        let mut pos = vec![];
+        for i in 0..10 {
+            for j in 0..6 {
+                for k in 0..6 {
+                    let c = |n: usize| (n as f64 + 0.5) * dx;
+                    pos.push(Vector3::new(c(i) + jitter(), c(j) + jitter(), c(k) + jitter()));
+                }
+            }
+        }
+        let (mut out, mut source) = (GhostGeometry::default(), vec![]);
+        b.images(0.0, &pos, &mut out, &mut source);
+        let mut candidates = vec![];
+        for (n, x) in pos.iter().enumerate() {
+            for a in 0..3 {
+                if x[a] < support {
+                    let mut p = *x;
+                    p[a] = -x[a];
+                    candidates.push((n, p));
+                }
+                if a < 2 && hi[a] - x[a] < support {
+                    let mut p = *x;
+                    p[a] = 2.0 * hi[a] - x[a];
+                    candidates.push((n, p));
+                }
+            }
+        }
+        let made = |n: usize, p: &Vector3<f64>| {
+            source
+                .iter()
+                .zip(&out.pos)
+                .any(|(&s, q)| s == n && (q - p).norm() < 1e-12)
+        };
+        let mut touching = 0;
+        for (n, p) in &candidates {
+            if pos.iter().any(|x| (x - p).norm() < support) {
+                touching += 1;
+                assert!(
+                    made(*n, p),
+                    "image of particle {n} at {p:?} touches the fluid but was not made"
+                );
+            }
+        }
+        for (n, p) in source.iter().zip(&out.pos) {
+            assert!(candidates.iter().any(|(cn, cp)| cn == n && (cp - p).norm() < 1e-12));
+        }
+        assert!(touching > 0 && source.len() >= touching);
+        assert!(
+            source.len() < candidates.len(),
+            "{} of {}",
+            source.len(),
+            candidates.len()
+        );
     }
 
     /// Regression: the first version imaged a particle through a side face at any height, above the top

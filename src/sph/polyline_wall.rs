@@ -10,7 +10,7 @@
 //! that are sampled from the corner outwards, so a rectangular tank gets ghosts on the fluid's own lattice.
 //! Fluid angles above π (Figs. 7.4–7.5: bisector ghosts, narrow angles) are not treated specially yet.
 
-use super::boundary::{Boundary, GhostGeometry, Mirror, RigidMotion};
+use super::boundary::{image_reach, Boundary, GhostGeometry, Mirror, RigidMotion};
 use super::rigid_pose::{MotionLaw, Pose2};
 use nalgebra::Vector2;
 
@@ -164,11 +164,14 @@ impl Boundary<2> for PolylineWall {
             let n = pose.vector(n0);
             let along = p1 - p0;
             let l2 = along.norm_squared();
+            // Signed distance from the side's line, positive on the fluid side.
+            let nearest = pos.iter().map(|x| -(x - p0).dot(&n)).fold(f64::INFINITY, f64::min);
+            let reach = image_reach(self.support, nearest);
             for (j, x) in pos.iter().enumerate() {
                 let r = x - p0;
                 let s = r.dot(&along) / l2;
                 let depth = -r.dot(&n); // distance from the wall on the fluid side
-                if !(0.0..=1.0).contains(&s) || depth <= 0.0 || depth >= self.support {
+                if !(0.0..=1.0).contains(&s) || depth <= 0.0 || depth >= reach {
                     continue;
                 }
                 let foot = x + n * depth;
@@ -485,6 +488,80 @@ mod tests {
         assert_eq!(points, 32, "the two 4x4 corner blocks mirror through the vertices");
         // Count: bottom 4 layers × 20 + two sides × 4 layers × 10 + two corners × 16.
         assert_eq!(g.pos.len(), 4 * 20 + 2 * 4 * 10 + 2 * 16);
+    }
+
+    /// Oracle for the images' reach (`image_reach`): on a jittered lattice filling the tank, every image that a
+    /// brute-force search finds within the support of some particle is made, every image made is one the full
+    /// support would make, and fewer are made than the full support would (the lattice's fourth row, 3.5 dx
+    /// deep, is 4.0 dx from the first row's reflection: beyond the support of 3.99 dx).
+    #[test]
+    fn images_are_made_where_they_touch_the_fluid_and_nowhere_deeper() {
+        let (dx, support) = (0.1, 0.399);
+        let pts = vec![
+            V2::new(0.0, 1.0),
+            V2::new(0.0, 0.0),
+            V2::new(2.0, 0.0),
+            V2::new(2.0, 1.0),
+        ];
+        let wall = PolylineWall::new("tank", pts, FluidSide::Left, RigidMotion::Fixed, dx, support)
+            .with_ghosts(GhostKind::Images);
+        let mut seed = 12345u64;
+        let mut jitter = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.2 * dx
+        };
+        let mut fluid = vec![];
+        for i in 0..20 {
+            for k in 0..8 {
+                fluid.push(V2::new(
+                    (i as f64 + 0.5) * dx + jitter(),
+                    (k as f64 + 0.5) * dx + jitter(),
+                ));
+            }
+        }
+        let (mut out, mut source) = (GhostGeometry::default(), vec![]);
+        wall.images(0.0, &fluid, &mut out, &mut source);
+        // The full-support candidates: (particle, image) through each of the three sides.
+        let mut candidates = vec![];
+        for (j, x) in fluid.iter().enumerate() {
+            if x.x < support {
+                candidates.push((j, V2::new(-x.x, x.y)));
+            }
+            if x.y < support {
+                candidates.push((j, V2::new(x.x, -x.y)));
+            }
+            if 2.0 - x.x < support {
+                candidates.push((j, V2::new(4.0 - x.x, x.y)));
+            }
+        }
+        let made = |j: usize, p: &V2| {
+            source
+                .iter()
+                .zip(&out.pos)
+                .any(|(&s, q)| s == j && (q - p).norm() < 1e-12)
+        };
+        let mut touching = 0;
+        for (j, p) in &candidates {
+            if fluid.iter().any(|x| (x - p).norm() < support) {
+                touching += 1;
+                assert!(
+                    made(*j, p),
+                    "image of particle {j} at {p:?} touches the fluid but was not made"
+                );
+            }
+        }
+        for (j, p) in source.iter().zip(&out.pos) {
+            assert!(candidates.iter().any(|(cj, cp)| cj == j && (cp - p).norm() < 1e-12));
+        }
+        assert!(touching > 0 && source.len() >= touching);
+        // Four lattice rows lie within the support of a side; of the fourth (3.4–3.6 dx deep, the nearest row
+        // 0.4–0.6 dx from the wall) only the part closer than the reach is imaged.
+        assert!(
+            source.len() < candidates.len(),
+            "{} of {}",
+            source.len(),
+            candidates.len()
+        );
     }
 
     #[test]

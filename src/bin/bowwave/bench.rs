@@ -22,8 +22,8 @@ pub struct BenchArgs {
     /// Thread counts to compare, comma separated.
     #[arg(long, value_delimiter = ',', default_value = "1,2")]
     pub threads: Vec<usize>,
-    /// Method variants to compare, comma separated (as in `chart speed-accuracy`, e.g. `delta-sph,table`);
-    /// `delta-sph` is the case's defaults.
+    /// Method variants to compare, comma separated (as in `chart speed-accuracy`, e.g. `delta-sph,table`;
+    /// `+` combines, e.g. `wendland+h=1.4`); `delta-sph` is the case's defaults.
     #[arg(long, value_delimiter = ',', default_value = "delta-sph")]
     pub variants: Vec<String>,
 }
@@ -57,7 +57,7 @@ pub struct BenchOneArgs {
     #[arg(long, default_value_t = 30)]
     pub steps: u64,
     /// Method variant, as in `bench --variants`: delta-sph, molteni, wcsph, wendland, pc, rk4, table,
-    /// exact-kernel, sun2017, no-shifting, images, fixed-ghosts, or alpha=A, delta=D, cfl=C, h=H.
+    /// exact-kernel, sun2017, no-shifting, images, fixed-ghosts, or alpha=A, delta=D, cfl=C, h=H; `+` combines them.
     #[arg(long, default_value = "delta-sph")]
     pub variant: String,
 }
