@@ -184,3 +184,57 @@ mod tests {
         assert!((m.displacement(5.0).x - (2.0 * 5.0 - 3.0)).abs() < 1e-12);
     }
 }
+
+/// Test support shared by the walls that make image ghosts.
+#[cfg(test)]
+pub(crate) mod image_oracle {
+    use nalgebra::SVector;
+
+    /// A deterministic jitter of ± `amplitude` / 2 (a linear congruential generator; no dependency).
+    pub fn jitter(seed: u64, amplitude: f64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * amplitude
+        }
+    }
+
+    /// The brute-force check of a wall's images against `candidates`, the (particle, image) pairs the full
+    /// support would make: every candidate within the support of some particle is made, every image made is a
+    /// candidate, and fewer are made than candidates.
+    pub fn check<const D: usize>(
+        fluid: &[SVector<f64, D>],
+        candidates: &[(usize, SVector<f64, D>)],
+        source: &[usize],
+        images: &[SVector<f64, D>],
+        support: f64,
+    ) {
+        let same = |a: &SVector<f64, D>, b: &SVector<f64, D>| (a - b).norm() < 1e-12;
+        let made = |j: usize, p: &SVector<f64, D>| source.iter().zip(images).any(|(&s, q)| s == j && same(q, p));
+        let mut touching = 0;
+        for (j, p) in candidates {
+            if fluid.iter().any(|x| (x - p).norm() < support) {
+                touching += 1;
+                assert!(
+                    made(*j, p),
+                    "image of particle {j} at {p:?} touches the fluid but was not made"
+                );
+            }
+        }
+        for (j, p) in source.iter().zip(images) {
+            assert!(
+                candidates.iter().any(|(cj, cp)| cj == j && same(cp, p)),
+                "{p:?} is no candidate"
+            );
+        }
+        assert!(touching > 0 && source.len() >= touching);
+        assert!(
+            source.len() < candidates.len(),
+            "{} of {}",
+            source.len(),
+            candidates.len()
+        );
+    }
+}

@@ -490,12 +490,8 @@ mod tests {
         assert_eq!(g.pos.len(), 4 * 20 + 2 * 4 * 10 + 2 * 16);
     }
 
-    /// Oracle for the images' reach (`image_reach`): on a jittered lattice filling the tank, every image that a
-    /// brute-force search finds within the support of some particle is made, every image made is one the full
-    /// support would make, and fewer are made than the full support would (the lattice's fourth row, 3.5 dx
-    /// deep, is 4.0 dx from the first row's reflection: beyond the support of 3.99 dx).
-    #[test]
-    fn images_are_made_where_they_touch_the_fluid_and_nowhere_deeper() {
+    /// The two-sided tank of the image tests: floor 2 long, sides 1 high, dx 0.1, support 0.399.
+    fn image_tank() -> (PolylineWall, f64, f64) {
         let (dx, support) = (0.1, 0.399);
         let pts = vec![
             V2::new(0.0, 1.0),
@@ -505,11 +501,17 @@ mod tests {
         ];
         let wall = PolylineWall::new("tank", pts, FluidSide::Left, RigidMotion::Fixed, dx, support)
             .with_ghosts(GhostKind::Images);
-        let mut seed = 12345u64;
-        let mut jitter = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.2 * dx
-        };
+        (wall, dx, support)
+    }
+
+    /// Oracle for the images' reach (`image_reach`): on a jittered lattice filling the tank, every image that a
+    /// brute-force search finds within the support of some particle is made, every image made is one the full
+    /// support would make, and fewer are made than the full support would (the lattice's fourth row, 3.5 dx
+    /// deep, is 4.0 dx from the first row's reflection: beyond the support of 3.99 dx).
+    #[test]
+    fn images_are_made_where_they_touch_the_fluid_and_nowhere_deeper() {
+        let (wall, dx, support) = image_tank();
+        let mut jitter = crate::sph::boundary::image_oracle::jitter(12345, 0.2 * dx);
         let mut fluid = vec![];
         for i in 0..20 {
             for k in 0..8 {
@@ -534,48 +536,12 @@ mod tests {
                 candidates.push((j, V2::new(4.0 - x.x, x.y)));
             }
         }
-        let made = |j: usize, p: &V2| {
-            source
-                .iter()
-                .zip(&out.pos)
-                .any(|(&s, q)| s == j && (q - p).norm() < 1e-12)
-        };
-        let mut touching = 0;
-        for (j, p) in &candidates {
-            if fluid.iter().any(|x| (x - p).norm() < support) {
-                touching += 1;
-                assert!(
-                    made(*j, p),
-                    "image of particle {j} at {p:?} touches the fluid but was not made"
-                );
-            }
-        }
-        for (j, p) in source.iter().zip(&out.pos) {
-            assert!(candidates.iter().any(|(cj, cp)| cj == j && (cp - p).norm() < 1e-12));
-        }
-        assert!(touching > 0 && source.len() >= touching);
-        // Four lattice rows lie within the support of a side; of the fourth (3.4–3.6 dx deep, the nearest row
-        // 0.4–0.6 dx from the wall) only the part closer than the reach is imaged.
-        assert!(
-            source.len() < candidates.len(),
-            "{} of {}",
-            source.len(),
-            candidates.len()
-        );
+        crate::sph::boundary::image_oracle::check(&fluid, &candidates, &source, &out.pos, support);
     }
 
     #[test]
     fn image_ghosts_mirror_each_particle_within_the_support_of_each_side() {
-        let dx = 0.1;
-        let support = 0.399;
-        let pts = vec![
-            V2::new(0.0, 1.0),
-            V2::new(0.0, 0.0),
-            V2::new(2.0, 0.0),
-            V2::new(2.0, 1.0),
-        ];
-        let wall = PolylineWall::new("tank", pts, FluidSide::Left, RigidMotion::Fixed, dx, support)
-            .with_ghosts(GhostKind::Images);
+        let (wall, dx, support) = image_tank();
         // Only the two 4×4 corner blocks of fixed ghosts remain.
         let mut fixed = GhostGeometry::default();
         wall.ghosts(0.0, &mut fixed);
