@@ -10,6 +10,7 @@ pub mod reference_file;
 pub mod run;
 pub mod sensor_placement;
 pub mod setup;
+pub mod variant;
 pub mod wall_motion;
 
 use crate::input_error::InputError;

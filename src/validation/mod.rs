@@ -248,8 +248,8 @@ pub const HULL_AT_REST: &str = "hull-at-rest";
 
 /// `bowwave validate`: runs the named case (or all) at `res` (or full resolution), prints the checks.
 ///
-/// `overrides`: settings given on the command line for every case (`--ghosts`, `--shifting`); the 3D tank
-/// takes the ghost kind only.
+/// `overrides`: settings given on the command line for every case (`--variant`, `--ghosts`, `--shifting`, …);
+/// the 3D cases take the ghost kind only, and are skipped under a variant (refused when named).
 pub fn validate_cli(
     case: Option<&str>,
     res: Option<f64>,
@@ -268,6 +268,13 @@ pub fn validate_cli(
     let mut blown = vec![];
     let mut ok = true;
     for n in names {
+        if (n == TANK_3D || n == HULL_AT_REST) && overrides.variant.is_some() {
+            if case.is_some() {
+                anyhow::bail!("--variant: `{n}` is built from code and takes `--ghosts` only; expected a 2D case");
+            }
+            eprintln!("{n}: skipped (--variant applies to the 2D cases)");
+            continue;
+        }
         if n == TANK_3D {
             let res = res.or(full_resolution(n)).unwrap_or(tank_3d::FULL_RESOLUTION);
             let ghosts = ghosts.unwrap_or(GhostKind::Fixed);

@@ -48,6 +48,12 @@ pub struct RunArgs {
     /// water's at laboratory scale).
     #[arg(long)]
     pub wall_slip: Option<WallSlip>,
+    /// A method variant applied to the case before the options above, by the names of `chart speed-accuracy
+    /// --variants`: delta-sph, molteni, wcsph, wendland (Wendland C2 at h = 2 dx), pc, rk4, table, exact-kernel,
+    /// images, fixed-ghosts, sun2017, no-shifting, alpha=A, delta=D, cfl=C, h=H (h/dx), joined by `+` to
+    /// combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
+    #[arg(long)]
+    pub variant: Option<String>,
     /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
     /// (by default such a rise is diagnosed as an unstable time integration or a non-conservative term).
     #[arg(long)]
@@ -59,6 +65,7 @@ impl RunArgs {
     pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         let mut case = cases::load(&self.case)?;
         CaseOverrides {
+            variant: self.variant,
             ghosts: self.ghosts.map(Into::into),
             shifting: self.shifting,
             nu: self.nu,
@@ -104,6 +111,10 @@ pub struct ValidateArgs {
     /// Free or no slip at every wall, overriding the case files (see `run --help`).
     #[arg(long)]
     pub wall_slip: Option<WallSlip>,
+    /// A method variant applied to every 2D case before the options above (see `run --help`), e.g.
+    /// `wendland+h=1.4`; the 3D cases refuse it.
+    #[arg(long)]
+    pub variant: Option<String>,
 }
 
 impl ValidateArgs {
@@ -114,6 +125,7 @@ impl ValidateArgs {
             self.res,
             self.out.as_deref(),
             &CaseOverrides {
+                variant: self.variant,
                 ghosts: self.ghosts.map(Into::into),
                 shifting: self.shifting,
                 nu: self.nu,
