@@ -15,16 +15,13 @@ use crate::sph::{
 /// `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter. Names joined by `+` apply in turn, left to right
 /// (`wendland+h=1.4`: the Wendland kernel at h = 1.4 dx).
 pub fn apply_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
-    if name.contains('+') {
-        for part in name.split('+') {
-            if part.is_empty() {
-                anyhow::bail!("variant `{name}`: an empty name between `+` signs");
-            }
-            apply_one_variant(case, part)?;
+    for part in name.split('+') {
+        if part.is_empty() {
+            anyhow::bail!("variant `{name}`: an empty name; expected names joined by `+`");
         }
-        return Ok(());
+        apply_one_variant(case, part)?;
     }
-    apply_one_variant(case, name)
+    Ok(())
 }
 
 fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {

@@ -165,12 +165,12 @@ impl Boundary<2> for PolylineWall {
             let along = p1 - p0;
             let l2 = along.norm_squared();
             // Signed distance from the side's line, positive on the fluid side.
-            let nearest = pos.iter().map(|x| -(x - p0).dot(&n)).fold(f64::INFINITY, f64::min);
+            let depth_of = |x: &V2| -(x - p0).dot(&n);
+            let nearest = pos.iter().map(depth_of).fold(f64::INFINITY, f64::min);
             let reach = image_reach(self.support, nearest);
             for (j, x) in pos.iter().enumerate() {
-                let r = x - p0;
-                let s = r.dot(&along) / l2;
-                let depth = -r.dot(&n); // distance from the wall on the fluid side
+                let s = (x - p0).dot(&along) / l2;
+                let depth = depth_of(x);
                 if !(0.0..=1.0).contains(&s) || depth <= 0.0 || depth >= reach {
                     continue;
                 }
