@@ -6,7 +6,7 @@ use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::twodt::{
     run::{TwoDtOptions, TwoDtResult},
     scene::{TwoDtConfig, Until},
-    wedge::{compare, print, WedgeSpec},
+    wedge::{compare, print, WedgeCheckpoints, WedgeSpec},
 };
 use std::sync::Arc;
 
@@ -25,7 +25,9 @@ fn wedge_sections_in_2dt_match_the_rigid_wedge() {
         dx: 1.5e-3,
         ..Default::default()
     };
-    let c = compare(&spec, &[0.02, 0.03]).expect("wedge runs");
+    let c = compare(&spec, &[0.02, 0.03], None)
+        .and_then(Ended::ran)
+        .expect("wedge runs");
     print(&c);
     let (a, b) = (c.twodt.last().unwrap(), c.rigid.last().unwrap());
     let pile = (a.pileup_over_vt / b.pileup_over_vt - 1.0).abs();
@@ -42,6 +44,51 @@ fn wedge_sections_in_2dt_match_the_rigid_wedge() {
         a.force_coefficient,
         b.force_coefficient
     );
+}
+
+/// The wedge check is resumable (a run at the third spacing outlasts a session): halted part-way through its
+/// first run, saved, and run again, it gives the same samples, bit for bit, as the same command uninterrupted;
+/// run once more, it recalls both finished runs from their folders instead of running them.
+#[test]
+fn wedge_halted_and_resumed_gives_the_same_samples_as_uninterrupted() {
+    let spec = WedgeSpec {
+        dx: 3e-3,
+        ..Default::default()
+    };
+    let at = [0.01, 0.02];
+    let root = std::env::temp_dir().join(format!("bowwave-wedge-resume-{}", std::process::id()));
+    let saving = |name: &str, halt_at_step: Option<u64>| WedgeCheckpoints {
+        dir: root.join(name),
+        every: std::time::Duration::MAX,
+        deadline: None,
+        halt_at_step,
+    };
+    let straight = compare(&spec, &at, Some(&saving("straight", None)))
+        .and_then(Ended::ran)
+        .expect("uninterrupted");
+    // Step 76 is in the last quarter of the second interval, where the pressure moments are being summed: the
+    // most state a halt can cut through.
+    let halted = compare(&spec, &at, Some(&saving("resumed", Some(76)))).expect("first session");
+    let Ended::Halted(h) = halted else {
+        panic!("expected a halt at step 76")
+    };
+    assert_eq!(h.steps, 76);
+    let vt: f64 = h.at.trim_start_matches("Vt/L = ").parse().expect("Vt/L");
+    assert!(vt > 0.75 * 0.02 && vt < 0.02, "halted at {}", h.at);
+    assert!(h.checkpoint.exists());
+    let resumed = compare(&spec, &at, Some(&saving("resumed", None)))
+        .and_then(Ended::ran)
+        .expect("second session");
+    assert_eq!(resumed.twodt, straight.twodt);
+    assert_eq!(resumed.rigid, straight.rigid);
+    assert_eq!(resumed.twodt.len(), 2);
+    assert!(!h.checkpoint.exists(), "a finished run leaves no checkpoint");
+    // Finished runs are recalled: even a halt at step 0 does not stop them.
+    let recalled = compare(&spec, &at, Some(&saving("resumed", Some(0))))
+        .and_then(Ended::ran)
+        .expect("recalled");
+    assert_eq!(recalled.rigid, straight.rigid);
+    let _ = std::fs::remove_dir_all(&root);
 }
 
 /// Athena at Fr = 0.64, dx/L = 2e-3, from the stem to x/L = 0.12: mass is conserved to round-off, the
@@ -671,7 +718,7 @@ fn wedge_entry_force_approaches_the_similarity_solution() {
         ..Default::default()
     };
     spec.c0 = Some(spec.mach_safe_c0());
-    let c = compare(&spec, &[0.015]).expect("wedge runs");
+    let c = compare(&spec, &[0.015], None).and_then(Ended::ran).expect("wedge runs");
     bowwave::twodt::wedge::print_similarity(&c);
     let exact = c
         .similarity

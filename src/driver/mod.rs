@@ -8,6 +8,7 @@
 //! ends, every observer's [`Observer::finish`] is called with the [`Outcome`], so that what it gathered is
 //! kept whatever happened (a blown-up run writes what it had).
 
+pub mod checkpoint;
 pub mod progress;
 
 use crate::sph::solver::BlowUp;

@@ -3,5 +3,6 @@
 pub mod atomic;
 pub mod checkpoint;
 pub mod csv_table;
+pub mod json_float;
 pub mod plot;
 pub mod vtk;

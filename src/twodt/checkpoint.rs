@@ -8,9 +8,9 @@ use super::result::PlungeMetrics;
 use super::scene::Scene;
 use crate::analysis::cavity::ClosureWatch;
 use crate::analysis::level_set::LevelSet;
+use crate::driver::checkpoint::{put_fluid, take_fluid, YZ};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv_table::Table;
-use crate::sph::particles::Fluid;
 use crate::sph::solver::SimState;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
@@ -128,20 +128,11 @@ pub fn fingerprint(cfg: &super::scene::TwoDtConfig, scene: &Scene) -> String {
 /// Saves the scene's particles and the loop state to `path` (atomically); `wall`/`cpu`: seconds so far.
 pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f64, cpu: f64) -> anyhow::Result<()> {
     let sim = &scene.sim;
-    let f = &sim.fluid;
     let mut c = Checkpoint::default();
+    put_fluid(&mut c, &sim.fluid, &YZ);
     let mut put = |name: &str, v: Vec<f64>| {
         c.arrays.insert(name.to_string(), v);
     };
-    put("pos_y", f.pos.iter().map(|p| p.x).collect());
-    put("pos_z", f.pos.iter().map(|p| p.y).collect());
-    put("vel_v", f.vel.iter().map(|v| v.x).collect());
-    put("vel_w", f.vel.iter().map(|v| v.y).collect());
-    put("rho", f.rho.clone());
-    put("mass", f.mass.clone());
-    put("id", f.id.iter().map(|&i| i as f64).collect());
-    put("tag", f.tag.clone());
-    put("phase", f.phase.iter().map(|&k| k as f64).collect());
     put("initial_depth", scene.initial_depth.clone());
     put("initial_row", scene.initial_row.iter().map(|&r| r as f64).collect());
     let mut tables = vec![];
@@ -244,23 +235,9 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
     if h.fingerprint != fingerprint {
         return Err(OtherConfiguration(path.to_path_buf()).into());
     }
-    let n = c.array(path, "rho", None)?.len();
-    let a = |name: &str| c.array(path, name, Some(n));
-    let v2 = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(&x, &y)| Vector2::new(x, y)).collect();
     scene.sim.set_state(SimState {
-        fluid: Fluid {
-            pos: v2(a("pos_y")?, a("pos_z")?),
-            vel: v2(a("vel_v")?, a("vel_w")?),
-            rho: a("rho")?.to_vec(),
-            mass: a("mass")?.to_vec(),
-            id: a("id")?.iter().map(|&i| i as u32).collect(),
-            tag: a("tag")?.to_vec(),
-            // Water (0) and, with `--air`, air (1); a checkpoint written before air was possible holds water.
-            phase: match c.arrays.contains_key("phase") {
-                true => a("phase")?.iter().map(|&k| k as u8).collect(),
-                false => vec![0; n],
-            },
-        },
+        // Water (phase 0) and, with `--air`, air (1).
+        fluid: take_fluid(&c, path, &YZ)?,
         time: h.time,
         steps: h.steps,
         last_dt: h.last_dt,

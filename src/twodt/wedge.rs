@@ -7,14 +7,18 @@
 //! F = (π³/4) ρ V³ t cot²β for the whole wedge (half of it in our half domain).
 
 use super::scene::{build, TwoDtConfig, Until};
-use crate::driver::{drive, Flow, Observer, Outcome};
+use crate::driver::checkpoint::{self, CheckpointPolicy, RunProgress, Saver};
+use crate::driver::{drive, Ended, Flow, Observer, Outcome};
 use crate::geometry::hull_file::{HullMeta, HullOffsets, HullStatus, Station};
 use crate::geometry::surface::HullSurface;
 use crate::sph::deforming_wall::{DeformingWall, Profile};
 use crate::sph::polyline_wall::{FluidSide, VertexMotion};
 use crate::sph::solver::Simulation;
 use nalgebra::Vector2;
+use std::cell::RefCell;
+use std::path::PathBuf;
 use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 type V2 = Vector2<f64>;
 
@@ -116,7 +120,7 @@ impl WedgeSpec {
 }
 
 /// One sample of a wedge run.
-#[derive(Clone, Debug, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct WedgeSample {
     /// Penetration depth V t.
     pub penetration: f64,
@@ -129,8 +133,10 @@ pub struct WedgeSample {
     /// solution has no gravity), one spacing into the fluid, averaged over the last quarter of the interval
     /// in bins of z/(V t) of width [`PROFILE_BIN`]: (z/(Vt) at the bin's centre, Cp), bins with samples only.
     pub cp_profile: Vec<(f64, f64)>,
-    /// The profile's largest Cp and its z/(V t).
+    /// The profile's largest Cp and its z/(V t) (−∞ and NaN for an empty profile).
+    #[serde(with = "crate::io::json_float")]
     pub cp_max: f64,
+    #[serde(with = "crate::io::json_float")]
     pub z_cpmax_over_vt: f64,
 }
 
@@ -182,7 +188,15 @@ impl Similarity {
 }
 
 /// Runs the wedge in 2D+t (`rigid = false`) or as a rigid wedge, sampling at the given penetrations.
-pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Vec<WedgeSample>> {
+/// One run of the wedge scene (the deforming sections, or with `rigid` the rigid wedge), sampled at the
+/// penetrations `at`. With a checkpoint policy it goes on from its folder's checkpoint of the same
+/// configuration, saves itself every `policy.every` and halts, saved, at the policy's limits.
+pub fn run_wedge(
+    spec: &WedgeSpec,
+    rigid: bool,
+    at: &[f64],
+    checkpoint: Option<&CheckpointPolicy>,
+) -> anyhow::Result<Ended<Vec<WedgeSample>>> {
     let hull = Arc::new(HullSurface::new(&spec.offsets()));
     let x_end = X_TOUCH + at.iter().copied().fold(0.0, f64::max) / spec.slope;
     let cfg = TwoDtConfig {
@@ -195,57 +209,120 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
         shifting: spec.shifting,
         ..Default::default()
     };
-    let mut scene = build(hull, &cfg)?;
+    let fingerprint = fingerprint(spec, rigid, at);
+    let saved = checkpoint.map(|c| c.path()).filter(|p| p.exists());
+    // A resumed run's particles come from the checkpoint: its scene is built unpacked.
+    let mut scene = build(hull, &if saved.is_some() { cfg.unpacked() } else { cfg.clone() })?;
     let v = scene.profile.u * spec.slope;
-    let t_start = scene.profile.t_start;
     // The stem is at x = 0, the section's start (x0).
     let t_touch = scene.profile.t_at(X_TOUCH);
     if rigid {
-        let s = *spec;
-        let (z_cut, z_top, tb) = (scene.geom.z_cut, scene.geom.z_top, spec.tan_beta());
-        let profile = move |t: f64| {
-            let moving = t >= t_start;
-            let za = if moving { -v * (t - t_touch) } else { s.apex(0.0) };
-            let vz = if moving { -v } else { 0.0 };
-            let y_top = (z_top - za) / tb;
-            Profile {
-                points: vec![V2::new(0.0, z_cut), V2::new(0.0, za), V2::new(y_top, z_top)],
-                motion: VertexMotion {
-                    vel: vec![V2::zeros(), V2::new(0.0, vz), V2::new(0.0, vz)],
-                    acc: vec![V2::zeros(); 3],
-                },
-            }
-        };
-        let support = scene.sim.kernel.support;
-        scene.sim.boundaries[1] = Box::new(DeformingWall::new(
-            "rigid-wedge",
-            Box::new(profile),
-            FluidSide::Right,
-            spec.dx,
-            support,
-        ));
+        scene.sim.boundaries[1] = rigid_wedge(spec, &scene);
     }
-    scene.settle()?;
     let mut targets: Vec<f64> = at.to_vec();
     targets.sort_by(f64::total_cmp);
+    let mut progress = WedgeProgress {
+        targets: targets.into_iter().rev().collect(),
+        ..Default::default()
+    };
+    let restored = match &saved {
+        Some(path) => checkpoint::restore(path, &fingerprint, &mut scene.sim)?.map(|p| (path, p)),
+        None => None,
+    };
+    match (restored, &saved) {
+        (Some((path, p)), _) => {
+            log::info!("{}: going on from step {}", path.display(), scene.sim.steps);
+            progress = p;
+        }
+        (None, saved) => {
+            if let Some(path) = saved {
+                log::warn!("{}: of another configuration, starting afresh", path.display());
+                scene = build(Arc::new(HullSurface::new(&spec.offsets())), &cfg)?;
+                if rigid {
+                    scene.sim.boundaries[1] = rigid_wedge(spec, &scene);
+                }
+            }
+            scene.settle()?;
+        }
+    }
+    let wall_before = progress.wall_before;
+    let state = RefCell::new(progress);
     let tb = spec.tan_beta();
     let mut sampler = WedgeSampler {
-        targets: targets.into_iter().rev().collect(),
         v,
         t_touch,
         dx: spec.dx,
         dir: V2::new(1.0, tb).normalize(),
         n: V2::new(tb, -1.0).normalize(),
-        stepped: false,
-        impulse: 0.0,
-        last: None,
-        moments: (0.0, 0.0),
-        profile: vec![],
-        out: vec![],
+        state: &state,
     };
-    match drive(&mut scene.sim, &mut [&mut sampler])? {
+    let at_text = |t: f64| format!("Vt/L = {:.4}", v * (t - t_touch));
+    // The saver observes first: what it saves is what the sampler has not yet seen, as a resumed run's sampler
+    // sees it again.
+    let mut saver = Saver::new(checkpoint, &fingerprint, &state, wall_before, &at_text);
+    let outcome = drive(&mut scene.sim, &mut [&mut saver, &mut sampler])?;
+    match outcome {
         Outcome::BlewUp(b) => anyhow::bail!("wedge run blew up: {b}"),
-        Outcome::Finished | Outcome::Halted(_) => Ok(sampler.out),
+        Outcome::Halted(h) => Ok(Ended::Halted(h)),
+        Outcome::Finished => {
+            if let Some(c) = checkpoint {
+                // Finished: the checkpoint has served its purpose.
+                let _ = std::fs::remove_file(c.path());
+            }
+            Ok(Ended::Ran(state.into_inner().out))
+        }
+    }
+}
+
+/// The rigid wedge translated at −V as the scene's section wall (boundary 1).
+fn rigid_wedge(spec: &WedgeSpec, scene: &super::scene::Scene) -> Box<dyn crate::sph::boundary::Boundary<2>> {
+    let v = scene.profile.u * spec.slope;
+    let t_start = scene.profile.t_start;
+    let t_touch = scene.profile.t_at(X_TOUCH);
+    let s = *spec;
+    let (z_cut, z_top, tb) = (scene.geom.z_cut, scene.geom.z_top, spec.tan_beta());
+    let profile = move |t: f64| {
+        let moving = t >= t_start;
+        let za = if moving { -v * (t - t_touch) } else { s.apex(0.0) };
+        let vz = if moving { -v } else { 0.0 };
+        let y_top = (z_top - za) / tb;
+        Profile {
+            points: vec![V2::new(0.0, z_cut), V2::new(0.0, za), V2::new(y_top, z_top)],
+            motion: VertexMotion {
+                vel: vec![V2::zeros(), V2::new(0.0, vz), V2::new(0.0, vz)],
+                acc: vec![V2::zeros(); 3],
+            },
+        }
+    };
+    Box::new(DeformingWall::new(
+        "rigid-wedge",
+        Box::new(profile),
+        FluidSide::Right,
+        spec.dx,
+        scene.sim.kernel.support,
+    ))
+}
+
+/// What a wedge run gathers besides the particles: the penetrations still to sample, the force's impulse and
+/// the pressure moments of the interval in progress, and the samples taken (a checkpoint saves them).
+#[derive(Clone, Debug, Default, serde::Serialize, serde::Deserialize)]
+struct WedgeProgress {
+    /// Penetrations still to sample, the next one last.
+    targets: Vec<f64>,
+    stepped: bool,
+    impulse: f64,
+    last: Option<(f64, f64)>,
+    moments: (f64, f64),
+    /// Sums and counts of Cp per bin of z/(V t) from −1, over the last quarter of the interval.
+    profile: Vec<(f64, u32)>,
+    out: Vec<WedgeSample>,
+    /// Wall seconds of the run's earlier sessions.
+    wall_before: f64,
+}
+
+impl RunProgress for WedgeProgress {
+    fn set_wall_before(&mut self, seconds: f64) {
+        self.wall_before = seconds;
     }
 }
 
@@ -254,52 +331,46 @@ pub fn run_wedge(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> anyhow::Result<Ve
 /// filters the SPH pressure noise. The pressure moments along the side in the similarity variable s/(V t)
 /// are summed over the last quarter of each interval: a single instant is too noisy for the centre of
 /// pressure.
-struct WedgeSampler {
-    /// Penetrations still to sample, the next one last.
-    targets: Vec<f64>,
+struct WedgeSampler<'a> {
     v: f64,
     t_touch: f64,
     dx: f64,
     dir: V2,
     n: V2,
-    stepped: bool,
-    impulse: f64,
-    last: Option<(f64, f64)>,
-    moments: (f64, f64),
-    /// Sums and counts of Cp per bin of z/(V t) from −1, over the last quarter of the interval.
-    profile: Vec<(f64, u32)>,
-    out: Vec<WedgeSample>,
+    state: &'a RefCell<WedgeProgress>,
 }
 
-impl Observer<Simulation<2>> for WedgeSampler {
+impl Observer<Simulation<2>> for WedgeSampler<'_> {
     fn observe(&mut self, sim: &mut Simulation<2>) -> anyhow::Result<Flow> {
         let v = self.v;
-        if let Some(&pen) = self.targets.last() {
-            if std::mem::replace(&mut self.stepped, true) && sim.time > self.t_touch {
+        let mut st = self.state.borrow_mut();
+        let st = &mut *st;
+        if let Some(&pen) = st.targets.last() {
+            if std::mem::replace(&mut st.stepped, true) && sim.time > self.t_touch {
                 sim.refresh();
                 let f = sim.boundary_forces()[1].y;
                 let t = sim.time - self.t_touch;
-                let (t0, f0) = self.last.unwrap_or((0.0, 0.0));
-                self.impulse += 0.5 * (f + f0) * (t - t0);
-                self.last = Some((t, f));
+                let (t0, f0) = st.last.unwrap_or((0.0, 0.0));
+                st.impulse += 0.5 * (f + f0) * (t - t0);
+                st.last = Some((t, f));
                 if t > 0.75 * pen / v {
-                    let (a, b) = pressure_moments(sim, self.dx, v * t, &self.dir, &self.n, v, &mut self.profile);
-                    self.moments.0 += a;
-                    self.moments.1 += b;
+                    let (a, b) = pressure_moments(sim, self.dx, v * t, &self.dir, &self.n, v, &mut st.profile);
+                    st.moments.0 += a;
+                    st.moments.1 += b;
                 }
             }
         }
-        while let Some(&pen) = self.targets.last() {
+        while let Some(&pen) = st.targets.last() {
             if sim.time < self.t_touch + pen / v {
                 break;
             }
-            self.targets.pop();
+            st.targets.pop();
             let t = sim.time - self.t_touch;
-            let (m0, m1) = std::mem::take(&mut self.moments);
+            let (m0, m1) = std::mem::take(&mut st.moments);
             // The centre of pressure s_cp gives the Wagner-equivalent wetted length c = (π/2) s_cp (for
             // p ∝ 1/√(c² − s²)), and the pile-up height c sinβ above the apex.
             let c_over_vt = std::f64::consts::FRAC_PI_2 * m1 / m0.max(1e-300);
-            let cp_profile: Vec<(f64, f64)> = std::mem::take(&mut self.profile)
+            let cp_profile: Vec<(f64, f64)> = std::mem::take(&mut st.profile)
                 .into_iter()
                 .enumerate()
                 .filter(|(_, (_, n))| *n > 0)
@@ -309,20 +380,16 @@ impl Observer<Simulation<2>> for WedgeSampler {
                 (f64::NAN, f64::NEG_INFINITY),
                 |best, b| if b.1 > best.1 { b } else { best },
             );
-            self.out.push(WedgeSample {
+            st.out.push(WedgeSample {
                 penetration: v * t,
                 pileup_over_vt: c_over_vt * self.dir.y,
-                force_coefficient: 2.0 * self.impulse / (v * v * v * t * t),
+                force_coefficient: 2.0 * st.impulse / (v * v * v * t * t),
                 cp_profile,
                 cp_max,
                 z_cpmax_over_vt,
             });
         }
-        Ok(if self.targets.is_empty() {
-            Flow::Stop
-        } else {
-            Flow::Step
-        })
+        Ok(if st.targets.is_empty() { Flow::Stop } else { Flow::Step })
     }
 }
 
@@ -363,22 +430,98 @@ fn pressure_moments(
     (m0, m1)
 }
 
-/// Runs both and returns the comparison.
-pub fn compare(spec: &WedgeSpec, at: &[f64]) -> anyhow::Result<WedgeComparison> {
+/// What identifies a wedge run: a checkpoint or a finished run's samples of another configuration are not used.
+fn fingerprint(spec: &WedgeSpec, rigid: bool, at: &[f64]) -> String {
+    format!("wedge {spec:?} | rigid {rigid} | at {at:?}")
+}
+
+/// Where the wedge runs of one command save themselves: each run in its own folder under `dir`
+/// (`beta30-dx5e-4-2dt/`, `…-rigid/`), its checkpoint every `every`, its samples (`samples.json`) once it has
+/// finished, so that the same command run again skips finished runs and goes on with the one in progress.
+#[derive(Clone, Debug)]
+pub struct WedgeCheckpoints {
+    pub dir: PathBuf,
+    pub every: Duration,
+    /// Halt, saved, at this instant (a session's wall-time limit shared by all the command's runs).
+    pub deadline: Option<Instant>,
+    /// Halt, saved, once a run has taken this many steps (tests).
+    pub halt_at_step: Option<u64>,
+}
+
+/// A finished run's samples, as `samples.json` keeps them.
+#[derive(serde::Serialize, serde::Deserialize)]
+struct Finished {
+    fingerprint: String,
+    samples: Vec<WedgeSample>,
+}
+
+/// One run, or its samples from an earlier session of the same command.
+fn run_or_recall(
+    spec: &WedgeSpec,
+    rigid: bool,
+    at: &[f64],
+    saving: Option<&WedgeCheckpoints>,
+) -> anyhow::Result<Ended<Vec<WedgeSample>>> {
+    let Some(w) = saving else {
+        return run_wedge(spec, rigid, at, None);
+    };
+    let run = if rigid { "rigid" } else { "2dt" };
+    let dir = w.dir.join(format!("beta{}-dx{:e}-{run}", spec.deadrise_deg, spec.dx));
+    let done = dir.join("samples.json");
+    let fp = fingerprint(spec, rigid, at);
+    if done.exists() {
+        let text = std::fs::read_to_string(&done).map_err(|e| anyhow::anyhow!("{}: {e}", done.display()))?;
+        let f: Finished = serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("{}: {e}", done.display()))?;
+        if f.fingerprint == fp {
+            log::info!("{}: finished in an earlier session", done.display());
+            return Ok(Ended::Ran(f.samples));
+        }
+    }
+    std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
+    let policy = CheckpointPolicy {
+        dir,
+        every: w.every,
+        wall_limit: w.deadline.map(|d| d.saturating_duration_since(Instant::now())),
+        halt_at_step: w.halt_at_step,
+    };
+    let ended = run_wedge(spec, rigid, at, Some(&policy))?;
+    if let Ended::Ran(samples) = &ended {
+        let f = Finished {
+            fingerprint: fp,
+            samples: samples.clone(),
+        };
+        crate::io::atomic::write_atomic(&done, serde_json::to_string(&f)?.as_bytes())?;
+    }
+    Ok(ended)
+}
+
+/// Runs both (with `saving`, each resumable) and returns the comparison, or where a run halted.
+pub fn compare(
+    spec: &WedgeSpec,
+    at: &[f64],
+    saving: Option<&WedgeCheckpoints>,
+) -> anyhow::Result<Ended<WedgeComparison>> {
     let cot = 1.0 / spec.tan_beta();
-    Ok(WedgeComparison {
+    let twodt = match run_or_recall(spec, false, at, saving)? {
+        Ended::Ran(s) => s,
+        Ended::Halted(h) => return Ok(Ended::Halted(h)),
+    };
+    let rigid = match run_or_recall(spec, true, at, saving)? {
+        Ended::Ran(s) => s,
+        Ended::Halted(h) => return Ok(Ended::Halted(h)),
+    };
+    Ok(Ended::Ran(WedgeComparison {
         spec_deadrise_deg: spec.deadrise_deg,
         dx: spec.dx,
-        twodt: run_wedge(spec, false, at)?,
-        rigid: run_wedge(spec, true, at)?,
+        twodt,
+        rigid,
         wagner_pileup_over_vt: std::f64::consts::FRAC_PI_2,
         wagner_force_coefficient: std::f64::consts::PI.powi(3) / 8.0 * cot * cot,
         wagner_cp_max: std::f64::consts::PI.powi(2) / 4.0 * cot * cot,
         similarity: Similarity::at(spec.deadrise_deg),
-    })
+    }))
 }
 
-/// Prints the comparison as a table with the differences.
 pub fn print(c: &WedgeComparison) {
     print_wagner(c);
     print_similarity(c);

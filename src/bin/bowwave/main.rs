@@ -123,7 +123,7 @@ fn run() -> anyhow::Result<ExitCode> {
         Command::Converge(a) => a.run(),
         Command::Chart { kind } => done(kind.run()),
         Command::Study(a) => a.run(),
-        Command::Wedge(a) => done(a.run()),
+        Command::Wedge(a) => a.run(),
         Command::Frames(a) => done(a.run()),
         Command::Bench(a) => done(a.run()),
         Command::Slab(a) => done(a.run()),

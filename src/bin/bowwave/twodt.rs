@@ -1,7 +1,7 @@
 //! `twodt` (one hull at one Froude number, from the stem to the plunge) and `wedge` (the 2D+t machinery
 //! against a rigid wedge entry and Wagner theory).
 
-use crate::options::{checkpoint_policy, halted, BLEW_UP};
+use crate::options::{checkpoint_policy, halted, minutes, BLEW_UP};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::twodt;
@@ -98,18 +98,44 @@ pub struct WedgeArgs {
     /// Particle shifting after each step: none (the default) or sun2017 (docs/reference/method.md).
     #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::None)]
     pub shifting: bowwave::sph::particle_shifting::ParticleShifting,
-    /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder.
+    /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder; each run saves
+    /// itself in its own folder under OUT/runs (a checkpoint while it runs, its samples once finished), so the
+    /// same command run again skips finished runs and goes on with the one in progress.
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// With `--out`: minutes of wall time between a run's checkpoints (0: none).
+    #[arg(long, default_value_t = 10.0)]
+    pub checkpoint_every: f64,
+    /// With `--out`: stop after this many minutes of wall time with the run in progress saved (exit status 3);
+    /// run the same command again to go on.
+    #[arg(long)]
+    pub wall_limit: Option<f64>,
 }
 
 impl WedgeArgs {
-    pub fn run(self) -> anyhow::Result<()> {
+    pub fn run(self) -> anyhow::Result<std::process::ExitCode> {
         anyhow::ensure!(
             self.c0 == "root" || self.c0 == "scene",
             "--c0 {}: expected `root` or `scene`",
             self.c0
         );
+        let every = minutes("--checkpoint-every", self.checkpoint_every)?;
+        let wall_limit = self
+            .wall_limit
+            .map(|w| minutes("--wall-limit", w))
+            .transpose()?
+            .flatten();
+        anyhow::ensure!(
+            self.out.is_some() || wall_limit.is_none(),
+            "--wall-limit: needs --out, the folder the runs save themselves in"
+        );
+        let started = std::time::Instant::now();
+        let saving = self.out.as_ref().map(|out| twodt::wedge::WedgeCheckpoints {
+            dir: out.join("runs"),
+            every: every.unwrap_or(std::time::Duration::MAX),
+            deadline: wall_limit.map(|w| started + w),
+            halt_at_step: None,
+        });
         let mut all = vec![];
         for &beta in &self.deadrise {
             anyhow::ensure!(
@@ -134,9 +160,15 @@ impl WedgeArgs {
                     self.at,
                     spec.penetration
                 );
-                let c = twodt::wedge::compare(&spec, &self.at)?;
+                let c = match twodt::wedge::compare(&spec, &self.at, saving.as_ref())? {
+                    Ended::Ran(c) => c,
+                    Ended::Halted(h) => return Ok(halted(&h)),
+                };
                 twodt::wedge::print(&c);
-                println!("  ({:.1} s for both runs)", clock.elapsed().as_secs_f64());
+                println!(
+                    "  ({:.1} s for both runs in this session)",
+                    clock.elapsed().as_secs_f64()
+                );
                 all.push(c);
             }
         }
@@ -162,7 +194,7 @@ impl WedgeArgs {
             }
             println!("wrote {} and wedge_profiles.csv", out.join("wedge.csv").display());
         }
-        Ok(())
+        Ok(std::process::ExitCode::SUCCESS)
     }
 }
 
