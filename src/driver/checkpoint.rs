@@ -105,13 +105,43 @@ pub fn take_fluid<const D: usize>(c: &Checkpoint, path: &Path, axes: &Axes<D>) -
     })
 }
 
+/// The solver's clock, what a step depends on besides the particles; in a checkpoint's header, its fields at
+/// the header's top level (`#[serde(flatten)]`).
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
+pub struct Clock {
+    pub time: f64,
+    pub steps: u64,
+    pub last_dt: f64,
+    pub wall_corrections: u64,
+}
+
+impl Clock {
+    pub fn of<const D: usize>(sim: &Simulation<D>) -> Self {
+        Clock {
+            time: sim.time,
+            steps: sim.steps,
+            last_dt: sim.last_dt,
+            wall_corrections: sim.wall_corrections,
+        }
+    }
+
+    /// The state to restore: these particles at this clock.
+    pub fn with<const D: usize>(self, fluid: Fluid<D>) -> SimState<D> {
+        SimState {
+            fluid,
+            time: self.time,
+            steps: self.steps,
+            last_dt: self.last_dt,
+            wall_corrections: self.wall_corrections,
+        }
+    }
+}
+
 #[derive(Serialize, Deserialize)]
 struct Header<P> {
     fingerprint: String,
-    time: f64,
-    steps: u64,
-    last_dt: f64,
-    wall_corrections: u64,
+    #[serde(flatten)]
+    clock: Clock,
     progress: P,
 }
 
@@ -134,10 +164,7 @@ pub fn save<const D: usize, P: Serialize>(
     put_fluid(&mut c, &sim.fluid, &axes::<D>());
     c.header = serde_json::to_value(Header {
         fingerprint: fingerprint.to_string(),
-        time: sim.time,
-        steps: sim.steps,
-        last_dt: sim.last_dt,
-        wall_corrections: sim.wall_corrections,
+        clock: Clock::of(sim),
         progress,
     })?;
     c.write(path)
@@ -156,13 +183,7 @@ pub fn restore<const D: usize, P: DeserializeOwned>(
     if h.fingerprint != fingerprint {
         return Ok(None);
     }
-    sim.set_state(SimState {
-        fluid: take_fluid(&c, path, &axes::<D>())?,
-        time: h.time,
-        steps: h.steps,
-        last_dt: h.last_dt,
-        wall_corrections: h.wall_corrections,
-    });
+    sim.set_state(h.clock.with(take_fluid(&c, path, &axes::<D>())?));
     Ok(Some(h.progress))
 }
 
@@ -171,7 +192,7 @@ pub fn restore<const D: usize, P: DeserializeOwned>(
 pub fn peek<P: DeserializeOwned>(path: &Path, fingerprint: &str) -> anyhow::Result<(bool, u64, P)> {
     let h: Header<P> = serde_json::from_value(Checkpoint::read_header(path)?)
         .map_err(|e| anyhow::anyhow!("checkpoint {}: header: {e}", path.display()))?;
-    Ok((h.fingerprint == fingerprint, h.steps, h.progress))
+    Ok((h.fingerprint == fingerprint, h.clock.steps, h.progress))
 }
 
 /// The observer that saves a run every `policy.every` of wall time and halts it, saved, at the policy's

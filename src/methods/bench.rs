@@ -23,6 +23,13 @@ pub struct BenchResult {
     pub particle_steps_per_second: f64,
     pub peak_rss_bytes: u64,
     pub bytes_per_particle: f64,
+    /// The process's resident memory before the scene was built (the program, its libraries and embedded
+    /// data), and the peak net of it per particle: what each particle costs, the figure that scales with the
+    /// problem (at H/dx 100 the 9 MB start is a third of the gross peak, at 6 million particles nothing).
+    #[serde(default)]
+    pub start_rss_bytes: u64,
+    #[serde(default)]
+    pub net_bytes_per_particle: f64,
     pub share_neighbour_search: f64,
     pub share_ghost_mirroring: f64,
     pub share_density_gradient: f64,
@@ -43,6 +50,7 @@ pub fn bench_case(variant: &str) -> anyhow::Result<cases::CaseFile> {
 
 /// Runs one configuration in this process (the thread count must already be set).
 pub fn bench_one(res: f64, end_star: f64, variant: &str) -> anyhow::Result<BenchResult> {
+    let start = crate::process_usage::peak_rss_bytes();
     let case = bench_case(variant)?;
     let end = end_star * (case.scales.length / case.gravity_magnitude()).sqrt();
     let r = run(
@@ -63,12 +71,14 @@ pub fn bench_one(res: f64, end_star: f64, variant: &str) -> anyhow::Result<Bench
         r.steps,
         r.wall_seconds,
         r.sim.timings,
+        start,
     ))
 }
 
 /// The measurement of a run in this process: `steps` steps of `fluid` particles with `ghosts` ghosts in `wall`
 /// seconds (particle-steps per second count the fluid, a step once), the stages' shares of the solver's time,
-/// and the peak resident memory per particle, ghosts included.
+/// and the peak resident memory per particle, ghosts included, gross and net of the process's resident memory
+/// `start` before the scene was built.
 fn measured(
     variant: &str,
     res: f64,
@@ -76,6 +86,7 @@ fn measured(
     steps: u64,
     wall: f64,
     t: crate::sph::solver::StageTimings,
+    start: u64,
 ) -> BenchResult {
     let total = (t.neighbour_search + t.ghost_mirroring + t.density_gradient + t.main_loop + t.update).max(1e-12);
     let rss = crate::process_usage::peak_rss_bytes();
@@ -90,6 +101,8 @@ fn measured(
         particle_steps_per_second: fluid as f64 * steps as f64 / wall.max(1e-12),
         peak_rss_bytes: rss,
         bytes_per_particle: rss as f64 / (fluid + ghosts) as f64,
+        start_rss_bytes: start,
+        net_bytes_per_particle: rss.saturating_sub(start) as f64 / (fluid + ghosts) as f64,
         share_neighbour_search: t.neighbour_search / total,
         share_ghost_mirroring: t.ghost_mirroring / total,
         share_density_gradient: t.density_gradient / total,
@@ -106,6 +119,7 @@ pub const SHIP_VARIANT: &str = "ship3d";
 /// the cost of a step, are the scene's own from the first step on).
 pub fn bench_ship_one(res: f64, steps: u64) -> anyhow::Result<BenchResult> {
     anyhow::ensure!(steps > 0, "bench --ship: expected at least one step");
+    let start = crate::process_usage::peak_rss_bytes();
     let opts = crate::compare3d::towed_ship::TowedShip::new(crate::validation::hull_at_rest::wigley(), 0.5, res);
     let mut sim = crate::compare3d::towed_ship::simulation(&opts)?;
     let clock = std::time::Instant::now();
@@ -114,7 +128,7 @@ pub fn bench_ship_one(res: f64, steps: u64) -> anyhow::Result<BenchResult> {
     }
     let wall = clock.elapsed().as_secs_f64();
     let counts = (sim.n_fluid(), sim.ghosts.geom.len());
-    Ok(measured(SHIP_VARIANT, res, counts, steps, wall, sim.timings))
+    Ok(measured(SHIP_VARIANT, res, counts, steps, wall, sim.timings, start))
 }
 
 /// What `bowwave bench` measures: the dam break to t√(g/H) = `end` with each variant, or the towed 3D ship
@@ -165,8 +179,8 @@ pub fn bench_cli(res: &[f64], threads: &[usize], case: &BenchCase) -> anyhow::Re
             }
         }
     }
-    println!("| variant | resolution | threads | fluid particles | ghosts | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
-    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    println!("| variant | resolution | threads | fluid particles | ghosts | steps | wall time (s) | particle-steps/s | speed-up | peak memory / particle (B) | net of the start (B) | neighbour search | ghost MLS | density gradient | main loop | update |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     for b in &results {
         let base = results
             .iter()
@@ -174,7 +188,7 @@ pub fn bench_cli(res: &[f64], threads: &[usize], case: &BenchCase) -> anyhow::Re
             .map(|o| format!("{:.2}", o.wall_seconds / b.wall_seconds))
             .unwrap_or_else(|| "–".into()); // no 1-thread run of this variant and resolution to compare with
         println!(
-            "| {} | {} | {} | {} | {} | {} | {:.1} | {:.3e} | {} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
+            "| {} | {} | {} | {} | {} | {} | {:.1} | {:.3e} | {} | {:.0} | {:.0} | {:.0}% | {:.0}% | {:.0}% | {:.0}% | {:.0}% |",
             b.variant,
             b.res,
             b.threads,
@@ -185,6 +199,7 @@ pub fn bench_cli(res: &[f64], threads: &[usize], case: &BenchCase) -> anyhow::Re
             b.particle_steps_per_second,
             base,
             b.bytes_per_particle,
+            b.net_bytes_per_particle,
             100.0 * b.share_neighbour_search,
             100.0 * b.share_ghost_mirroring,
             100.0 * b.share_density_gradient,

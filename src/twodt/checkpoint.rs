@@ -8,10 +8,9 @@ use super::result::PlungeMetrics;
 use super::scene::Scene;
 use crate::analysis::cavity::ClosureWatch;
 use crate::analysis::level_set::LevelSet;
-use crate::driver::checkpoint::{put_fluid, take_fluid, YZ};
+use crate::driver::checkpoint::{put_fluid, take_fluid, Clock, YZ};
 use crate::io::checkpoint::Checkpoint;
 use crate::io::csv_table::Table;
-use crate::sph::solver::SimState;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -80,10 +79,8 @@ pub struct Passage {
 #[derive(Serialize, Deserialize)]
 struct Header {
     fingerprint: String,
-    time: f64,
-    steps: u64,
-    last_dt: f64,
-    wall_corrections: u64,
+    #[serde(flatten)]
+    clock: Clock,
     packing: Option<crate::sph::packing::PackingReport>,
     steps0: u64,
     total_mass: f64,
@@ -159,10 +156,7 @@ pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f6
     });
     c.header = serde_json::to_value(Header {
         fingerprint: fingerprint.to_string(),
-        time: sim.time,
-        steps: sim.steps,
-        last_dt: sim.last_dt,
-        wall_corrections: sim.wall_corrections,
+        clock: Clock::of(sim),
         packing: scene.packing,
         steps0: p.steps0,
         total_mass: p.total_mass,
@@ -210,8 +204,8 @@ pub fn peek(path: &Path) -> anyhow::Result<Saved> {
         .map_err(|e| anyhow::anyhow!("checkpoint {}: header: {e}", path.display()))?;
     Ok(Saved {
         fingerprint: h.fingerprint,
-        time: h.time,
-        steps: h.steps,
+        time: h.clock.time,
+        steps: h.clock.steps,
         x_stop: h.x_stop,
         plunged: h.plunge.is_some(),
         wall_seconds: h.wall_seconds,
@@ -235,14 +229,8 @@ pub fn restore(path: &Path, fingerprint: &str, scene: &mut Scene) -> anyhow::Res
     if h.fingerprint != fingerprint {
         return Err(OtherConfiguration(path.to_path_buf()).into());
     }
-    scene.sim.set_state(SimState {
-        // Water (phase 0) and, with `--air`, air (1).
-        fluid: take_fluid(&c, path, &YZ)?,
-        time: h.time,
-        steps: h.steps,
-        last_dt: h.last_dt,
-        wall_corrections: h.wall_corrections,
-    });
+    // Water (phase 0) and, with `--air`, air (1).
+    scene.sim.set_state(h.clock.with(take_fluid(&c, path, &YZ)?));
     scene.initial_depth = c.array(path, "initial_depth", None)?.to_vec();
     scene.initial_row = c
         .array(path, "initial_row", None)?

@@ -1,7 +1,7 @@
 //! `bent-wall`: the bent-wall channel of thesis §10.2.1 in 2D+t (the plate of eq. 10.8's cut), and
 //! `bent-wall-3d`: the same channel in 3D beside it.
 
-use crate::options::{halted, TowedCheckpointArgs, BLEW_UP};
+use crate::options::{halted, CheckpointArgs, BLEW_UP};
 use bowwave::compare3d::bent_wall::{run, summary, write_outputs, BentWallOptions};
 use bowwave::compare3d::bent_wall_3d::{self, Tow3dOptions};
 use bowwave::driver::Ended;
@@ -126,7 +126,7 @@ pub struct BentWall3dArgs {
     #[arg(long, default_value_t = Tow3dOptions::default().sample)]
     pub sample: f64,
     #[command(flatten)]
-    pub checkpoint: TowedCheckpointArgs,
+    pub checkpoint: CheckpointArgs,
     /// Output folder for bent_wall_3d.csv (the cuts, 3D beside 2D+t), bent_wall_3d_history.csv,
     /// bent_wall_3d_eta.csv, bent_wall_3d.json, bent_wall_3d_heights.png and bent_wall_3d_eta.png (default out/bent-wall-3d-frF-resN).
     #[arg(long)]

@@ -39,11 +39,12 @@ pub fn checkpoint_policy(
     })
 }
 
-/// `--checkpoint-every` and `--wall-limit` of a towed 3D run (`ship`, `bent-wall-3d`).
+/// `--checkpoint-every` and `--wall-limit` of a run that saves itself in its folder (`ship`, `bent-wall-3d`,
+/// `wedge`).
 #[derive(clap::Args)]
-pub struct TowedCheckpointArgs {
-    /// Minutes of wall time between checkpoints (OUT/checkpoint.bin; 0: none). The same command run again goes on
-    /// from the checkpoint, to the same bits.
+pub struct CheckpointArgs {
+    /// Minutes of wall time between checkpoints (checkpoint.bin in the run's folder; 0: none). The same command
+    /// run again goes on from the checkpoint, to the same bits.
     #[arg(long, default_value_t = 10.0)]
     pub checkpoint_every: f64,
     /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
@@ -52,20 +53,26 @@ pub struct TowedCheckpointArgs {
     pub wall_limit: Option<f64>,
 }
 
-impl TowedCheckpointArgs {
-    /// The policy saving into `dir`; `None` when neither option asks for one.
-    pub fn policy(
-        &self,
-        dir: &std::path::Path,
-    ) -> anyhow::Result<Option<bowwave::compare3d::towed_checkpoint::CheckpointPolicy>> {
+impl CheckpointArgs {
+    /// The time between checkpoints and the wall-time limit, each `None` when not asked for.
+    pub fn limits(&self) -> anyhow::Result<(Option<std::time::Duration>, Option<std::time::Duration>)> {
         let every = minutes("--checkpoint-every", self.checkpoint_every)?;
         let wall_limit = self
             .wall_limit
             .map(|w| minutes("--wall-limit", w))
             .transpose()?
             .flatten();
+        Ok((every, wall_limit))
+    }
+
+    /// The policy saving into `dir`; `None` when neither option asks for one.
+    pub fn policy(
+        &self,
+        dir: &std::path::Path,
+    ) -> anyhow::Result<Option<bowwave::driver::checkpoint::CheckpointPolicy>> {
+        let (every, wall_limit) = self.limits()?;
         Ok(
-            (every.is_some() || wall_limit.is_some()).then(|| bowwave::compare3d::towed_checkpoint::CheckpointPolicy {
+            (every.is_some() || wall_limit.is_some()).then(|| bowwave::driver::checkpoint::CheckpointPolicy {
                 dir: dir.to_path_buf(),
                 every: every.unwrap_or(std::time::Duration::MAX),
                 wall_limit,

@@ -1,6 +1,6 @@
 //! `ship`: the 3D mode's ship in steady forward motion, beside its 2D+t solution (issue #31).
 
-use crate::options::{halted, TowedCheckpointArgs, BLEW_UP};
+use crate::options::{halted, CheckpointArgs, BLEW_UP};
 use bowwave::compare3d::towed_ship::{self, TowOptions, TowedShip};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
@@ -30,7 +30,7 @@ pub struct ShipArgs {
     #[arg(long)]
     pub twodt: Option<PathBuf>,
     #[command(flatten)]
-    pub checkpoint: TowedCheckpointArgs,
+    pub checkpoint: CheckpointArgs,
     /// Output folder (default out/ship-NAME-frF-resR).
     #[arg(long)]
     pub out: Option<PathBuf>,

@@ -1,7 +1,7 @@
 //! `twodt` (one hull at one Froude number, from the stem to the plunge) and `wedge` (the 2D+t machinery
 //! against a rigid wedge entry and Wagner theory).
 
-use crate::options::{checkpoint_policy, halted, minutes, BLEW_UP};
+use crate::options::{checkpoint_policy, halted, CheckpointArgs, BLEW_UP};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::twodt;
@@ -103,13 +103,9 @@ pub struct WedgeArgs {
     /// same command run again skips finished runs and goes on with the one in progress.
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// With `--out`: minutes of wall time between a run's checkpoints (0: none).
-    #[arg(long, default_value_t = 10.0)]
-    pub checkpoint_every: f64,
-    /// With `--out`: stop after this many minutes of wall time with the run in progress saved (exit status 3);
-    /// run the same command again to go on.
-    #[arg(long)]
-    pub wall_limit: Option<f64>,
+    /// With `--out`: checkpoints of the run in progress, and when to stop it saved.
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
 }
 
 impl WedgeArgs {
@@ -119,12 +115,7 @@ impl WedgeArgs {
             "--c0 {}: expected `root` or `scene`",
             self.c0
         );
-        let every = minutes("--checkpoint-every", self.checkpoint_every)?;
-        let wall_limit = self
-            .wall_limit
-            .map(|w| minutes("--wall-limit", w))
-            .transpose()?
-            .flatten();
+        let (every, wall_limit) = self.checkpoint.limits()?;
         anyhow::ensure!(
             self.out.is_some() || wall_limit.is_none(),
             "--wall-limit: needs --out, the folder the runs save themselves in"
