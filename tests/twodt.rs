@@ -48,7 +48,8 @@ fn wedge_sections_in_2dt_match_the_rigid_wedge() {
 
 /// The wedge check is resumable (a run at the third spacing outlasts a session): halted part-way through its
 /// first run, saved, and run again, it gives the same samples, bit for bit, as the same command uninterrupted;
-/// run once more, it recalls both finished runs from their folders instead of running them.
+/// run once more, it recalls both finished runs from their folders instead of running them. A checkpoint or
+/// finished samples of another configuration are not used: that run starts afresh.
 #[test]
 fn wedge_halted_and_resumed_gives_the_same_samples_as_uninterrupted() {
     let spec = WedgeSpec {
@@ -76,6 +77,22 @@ fn wedge_halted_and_resumed_gives_the_same_samples_as_uninterrupted() {
     let vt: f64 = h.at.trim_start_matches("Vt/L = ").parse().expect("Vt/L");
     assert!(vt > 0.75 * 0.02 && vt < 0.02, "halted at {}", h.at);
     assert!(h.checkpoint.exists());
+    // Another configuration in a folder holding this one's checkpoint starts afresh, and ends as its own
+    // uninterrupted run does.
+    let other_at = [0.01];
+    let other_dir = saving("other", None)
+        .dir
+        .join(h.checkpoint.parent().unwrap().file_name().unwrap());
+    std::fs::create_dir_all(&other_dir).unwrap();
+    std::fs::copy(&h.checkpoint, other_dir.join("checkpoint.bin")).unwrap();
+    let other = compare(&spec, &other_at, Some(&saving("other", None)))
+        .and_then(Ended::ran)
+        .expect("other configuration");
+    let other_straight = compare(&spec, &other_at, None)
+        .and_then(Ended::ran)
+        .expect("other, uninterrupted");
+    assert_eq!(other.twodt, other_straight.twodt);
+    assert_eq!(other.rigid, other_straight.rigid);
     let resumed = compare(&spec, &at, Some(&saving("resumed", None)))
         .and_then(Ended::ran)
         .expect("second session");
@@ -88,6 +105,11 @@ fn wedge_halted_and_resumed_gives_the_same_samples_as_uninterrupted() {
         .and_then(Ended::ran)
         .expect("recalled");
     assert_eq!(recalled.rigid, straight.rigid);
+    // A finished run of another configuration in the folder is run again, not recalled.
+    let rerun = compare(&spec, &other_at, Some(&saving("resumed", None)))
+        .and_then(Ended::ran)
+        .expect("rerun");
+    assert_eq!(rerun.twodt, other_straight.twodt);
     let _ = std::fs::remove_dir_all(&root);
 }
 
