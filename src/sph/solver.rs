@@ -781,26 +781,41 @@ impl<const D: usize> Simulation<D> {
         };
         let (pos, vel, rho): (Vec<SVector<f64, D>>, Vec<SVector<f64, D>>, Vec<f64>) = match self.cfg.integrator {
             Integrator::Rk4 => {
+                // The classical combination y0 + (k1 + 2 k2 + 2 k3 + k4) dt/6, summed as each stage ends (the
+                // same additions in the same order, so the same bits), so that one stage's state and rates are
+                // alive at a time rather than all four.
+                let mut sum_vel = vel0.clone();
+                let (mut sum_dvel, mut sum_drho) = (k1.dvel.clone(), k1.drho.clone());
+                let add = |sum_vel: &mut [SVector<f64, D>],
+                           sum_dvel: &mut [SVector<f64, D>],
+                           sum_drho: &mut [f64],
+                           c: f64,
+                           vel: &[SVector<f64, D>],
+                           k: &Rates<D>| {
+                    sum_vel.par_iter_mut().zip(vel).for_each(|(s, v)| *s += v * c);
+                    sum_dvel.par_iter_mut().zip(&k.dvel).for_each(|(s, a)| *s += a * c);
+                    sum_drho.par_iter_mut().zip(&k.drho).for_each(|(s, r)| *s += c * r);
+                };
                 let (p2, v2, r2) = axpy(0.5 * dt, &vel0, &k1);
+                drop(k1);
                 let k2 = self.rates(t0 + 0.5 * dt, &p2, &v2, &r2);
+                drop((p2, r2));
+                add(&mut sum_vel, &mut sum_dvel, &mut sum_drho, 2.0, &v2, &k2);
                 let (p3, v3, r3) = axpy(0.5 * dt, &v2, &k2);
+                drop((v2, k2));
                 let k3 = self.rates(t0 + 0.5 * dt, &p3, &v3, &r3);
+                drop((p3, r3));
+                add(&mut sum_vel, &mut sum_dvel, &mut sum_drho, 2.0, &v3, &k3);
                 let (p4, v4, r4) = axpy(dt, &v3, &k3);
+                drop((v3, k3));
                 let k4 = self.rates(t0 + dt, &p4, &v4, &r4);
+                drop((p4, r4));
+                add(&mut sum_vel, &mut sum_dvel, &mut sum_drho, 1.0, &v4, &k4);
+                drop((v4, k4));
                 let w = dt / 6.0;
-                let n = pos0.len();
-                let pos = (0..n)
-                    .into_par_iter()
-                    .map(|i| pos0[i] + (vel0[i] + v2[i] * 2.0 + v3[i] * 2.0 + v4[i]) * w)
-                    .collect();
-                let vel = (0..n)
-                    .into_par_iter()
-                    .map(|i| vel0[i] + (k1.dvel[i] + k2.dvel[i] * 2.0 + k3.dvel[i] * 2.0 + k4.dvel[i]) * w)
-                    .collect();
-                let rho = (0..n)
-                    .into_par_iter()
-                    .map(|i| rho0[i] + (k1.drho[i] + 2.0 * k2.drho[i] + 2.0 * k3.drho[i] + k4.drho[i]) * w)
-                    .collect();
+                let pos = pos0.par_iter().zip(&sum_vel).map(|(p, s)| p + s * w).collect();
+                let vel = vel0.par_iter().zip(&sum_dvel).map(|(u, s)| u + s * w).collect();
+                let rho = rho0.par_iter().zip(&sum_drho).map(|(r, s)| r + s * w).collect();
                 (pos, vel, rho)
             }
             Integrator::PredictorCorrector => {
