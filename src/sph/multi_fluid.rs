@@ -196,7 +196,7 @@ pub(super) fn rates<const D: usize>(
     mf: &MultiFluid,
     cfg: &SolverConfig<D>,
     st: &Stage<'_, D>,
-) -> Vec<(f64, SVector<f64, D>, f64)> {
+) -> super::solver::Gathered<D> {
     let nf = st.pos.len();
     let gs = st.ghosts;
     let h = st.h;
@@ -276,9 +276,9 @@ pub(super) fn rates<const D: usize>(
             }
             dvel += cfg.body_force.acceleration(&st.pos[i]);
             let signal = timestep::signal_speed(eos.sound_speed(rho_i), u_i.norm(), h, max_pi);
-            (drho, dvel, signal)
+            (drho, (dvel, signal))
         })
-        .collect()
+        .unzip()
 }
 
 #[cfg(test)]

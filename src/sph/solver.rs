@@ -236,6 +236,10 @@ impl std::fmt::Display for BlowUp {
 
 impl std::error::Error for BlowUp {}
 
+/// A gather's output, unzipped as it is collected (no array of triples besides the three arrays): dρ/dt, and
+/// du/dt with the signal speed of eq. (4.22), per fluid particle.
+pub(super) type Gathered<const D: usize> = (Vec<f64>, (Vec<SVector<f64, D>>, Vec<f64>));
+
 /// Rates of change of one evaluation.
 #[derive(Clone, Debug, Default)]
 struct Rates<const D: usize> {
@@ -246,14 +250,14 @@ struct Rates<const D: usize> {
 }
 
 impl<const D: usize> Rates<D> {
-    /// From a gather's (dρ/dt, du/dt, signal speed) per particle. max is exact and order-free, so the parallel
+    /// From a gather's dρ/dt, du/dt and signal speed per particle. max is exact and order-free, so the parallel
     /// reductions give the same bits for any thread count.
-    fn from_gather(out: Vec<(f64, SVector<f64, D>, f64)>) -> Self {
+    fn from_gather((drho, (dvel, signal)): Gathered<D>) -> Self {
         Rates {
-            drho: out.par_iter().map(|o| o.0).collect(),
-            dvel: out.par_iter().map(|o| o.1).collect(),
-            max_signal: out.par_iter().map(|o| o.2).reduce(|| 0.0, f64::max),
-            max_accel: out.par_iter().map(|o| o.1.norm()).reduce(|| 0.0, f64::max),
+            max_signal: signal.par_iter().copied().reduce(|| 0.0, f64::max),
+            max_accel: dvel.par_iter().map(|a| a.norm()).reduce(|| 0.0, f64::max),
+            drho,
+            dvel,
         }
     }
 }
@@ -681,7 +685,7 @@ impl<const D: usize> Simulation<D> {
         let body = cfg.body_force;
 
         // Stage 5: continuity and momentum, eq. (5.1).
-        let out: Vec<(f64, SVector<f64, D>, f64)> = (0..nf)
+        let gathered: Gathered<D> = (0..nf)
             .into_par_iter()
             .map(|i| {
                 let (rho_i, u_i, p_i) = (rho[i], vel[i], pressure[i]);
@@ -719,10 +723,10 @@ impl<const D: usize> Simulation<D> {
                 }
                 dvel += body.acceleration(&pos[i]);
                 let signal = timestep::signal_speed(eos.sound_speed(rho_i), u_i.norm(), h, max_pi);
-                (drho, dvel, signal)
+                (drho, (dvel, signal))
             })
-            .collect();
-        let rates = Rates::from_gather(out);
+            .unzip();
+        let rates = Rates::from_gather(gathered);
         self.timings.main_loop += clock.elapsed().as_secs_f64();
         rates
     }
