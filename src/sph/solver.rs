@@ -1134,7 +1134,7 @@ impl<const D: usize> GradientPass<'_, D> {
                         if j == i {
                             return;
                         }
-                        list.push(j as u32);
+                        push_tight(list, j as u32);
                         if self.need_grad && same(i, j) {
                             let gw = rij * self.gradient.at(r2);
                             let (rho_j, v_j) = if j < nf {
@@ -1153,6 +1153,18 @@ impl<const D: usize> GradientPass<'_, D> {
             })
             .collect()
     }
+}
+
+/// Appends to a neighbour list that lives from step to step, growing it by an eighth (at least 8 places) when
+/// full rather than doubling it: a list keeps the largest capacity it has needed, and doubling would leave up to
+/// half of it empty (a 3D list of about 270 neighbours held 512 places, 2 KB; here it holds at most an eighth
+/// more than it needed). Only the capacity differs, not the contents.
+#[inline]
+fn push_tight(list: &mut Vec<u32>, j: u32) {
+    if list.len() == list.capacity() {
+        list.reserve_exact(list.len() / 8 + 8);
+    }
+    list.push(j);
 }
 
 /// Completes each image ghost's density gradient: [`Simulation::prepare`] gave it the Neumann normal part of
