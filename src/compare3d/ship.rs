@@ -26,11 +26,12 @@ const G: f64 = 9.81;
 const RHO0: f64 = 1000.0;
 
 /// Memory of a 3D ship run per lattice node of water, in bytes: the particles with their neighbour lists, stage
-/// copies and the tank's and hull's ghosts. Measured as the slope of the peak resident memory between two
-/// towed Wigley runs (D/dx 3: 9 812 particles, 31.7 MiB; D/dx 4: 23 270, 59.7 MiB; 1 thread, session 31), with
-/// a tenth added for the second thread's buffers. Used to refuse a spacing the machine cannot hold, before
-/// anything is allocated.
-pub const BYTES_PER_PARTICLE: f64 = 2.4e3;
+/// copies and the tank's and hull's ghosts. Measured as the slope of the peak resident memory between towed
+/// Wigley runs (`bench-one --ship --steps 3 --threads 1`, session 46: D/dx 3 / 4 / 5, 19 316 / 45 798 / 89 436
+/// fluid particles, 46.1 / 90.4 / 160.8 MB: 1 671 and 1 612 B per particle), with a tenth added for the second
+/// thread's buffers and rounded up. Used to refuse a spacing the machine cannot hold, before anything is
+/// allocated.
+pub const BYTES_PER_PARTICLE: f64 = 1.9e3;
 
 /// The tank around a hull, in units of the hull's L, B and D.
 #[derive(Clone, Debug)]
