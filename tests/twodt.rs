@@ -63,6 +63,7 @@ fn wedge_halted_and_resumed_gives_the_same_samples_as_uninterrupted() {
         every: std::time::Duration::MAX,
         deadline: None,
         halt_at_step,
+        fresh: false,
     };
     let straight = compare(&spec, &at, Some(&saving("straight", None)))
         .and_then(Ended::ran)
@@ -105,6 +106,12 @@ fn wedge_halted_and_resumed_gives_the_same_samples_as_uninterrupted() {
         .and_then(Ended::ran)
         .expect("recalled");
     assert_eq!(recalled.rigid, straight.rigid);
+    // Fresh: run again (a halt at step 0 stops it), nothing recalled.
+    let fresh = WedgeCheckpoints {
+        fresh: true,
+        ..saving("resumed", Some(0))
+    };
+    assert!(matches!(compare(&spec, &at, Some(&fresh)), Ok(Ended::Halted(_))));
     // A finished run of another configuration in the folder is run again, not recalled.
     let rerun = compare(&spec, &other_at, Some(&saving("resumed", None)))
         .and_then(Ended::ran)

@@ -446,6 +446,8 @@ pub struct WedgeCheckpoints {
     pub deadline: Option<Instant>,
     /// Halt, saved, once a run has taken this many steps (tests).
     pub halt_at_step: Option<u64>,
+    /// Start every run from the beginning: earlier samples and checkpoints in `dir` are removed first.
+    pub fresh: bool,
 }
 
 /// A finished run's samples, as `samples.json` keeps them.
@@ -469,6 +471,13 @@ fn run_or_recall(
     let dir = w.dir.join(format!("beta{}-dx{:e}-{run}", spec.deadrise_deg, spec.dx));
     let done = dir.join("samples.json");
     let fp = fingerprint(spec, rigid, at);
+    if w.fresh {
+        for f in [done.clone(), dir.join(checkpoint::FILE)] {
+            if f.exists() {
+                std::fs::remove_file(&f).map_err(|e| anyhow::anyhow!("cannot remove {}: {e}", f.display()))?;
+            }
+        }
+    }
     if done.exists() {
         let text = std::fs::read_to_string(&done).map_err(|e| anyhow::anyhow!("{}: {e}", done.display()))?;
         let f: Finished = serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("{}: {e}", done.display()))?;

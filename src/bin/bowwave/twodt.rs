@@ -106,6 +106,10 @@ pub struct WedgeArgs {
     /// With `--out`: checkpoints of the run in progress, and when to stop it saved.
     #[command(flatten)]
     pub checkpoint: CheckpointArgs,
+    /// With `--out`: run everything again, ignoring (and replacing) the runs saved in OUT/runs by an earlier
+    /// command, e.g. after a change of the program (to go on after a `--wall-limit` stop, leave it out).
+    #[arg(long)]
+    pub fresh: bool,
 }
 
 impl WedgeArgs {
@@ -126,6 +130,7 @@ impl WedgeArgs {
             every: every.unwrap_or(std::time::Duration::MAX),
             deadline: wall_limit.map(|w| started + w),
             halt_at_step: None,
+            fresh: self.fresh,
         });
         let mut all = vec![];
         for &beta in &self.deadrise {
