@@ -187,7 +187,6 @@ impl Similarity {
     }
 }
 
-/// Runs the wedge in 2D+t (`rigid = false`) or as a rigid wedge, sampling at the given penetrations.
 /// One run of the wedge scene (the deforming sections, or with `rigid` the rigid wedge), sampled at the
 /// penetrations `at`. With a checkpoint policy it goes on from its folder's checkpoint of the same
 /// configuration, saves itself every `policy.every` and halts, saved, at the policy's limits.
