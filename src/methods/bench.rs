@@ -25,7 +25,7 @@ pub struct BenchResult {
     pub bytes_per_particle: f64,
     /// The process's resident memory before the scene was built (the program, its libraries and embedded
     /// data), and the peak net of it per particle: what each particle costs, the figure that scales with the
-    /// problem (at H/dx 100 the 9 MB start is a third of the gross peak, at 6 million particles nothing).
+    /// problem (at H/dx 100 the 5.4 MB start is a fifth of the gross peak, at 6 million particles nothing).
     #[serde(default)]
     pub start_rss_bytes: u64,
     #[serde(default)]

@@ -209,9 +209,19 @@ pub fn run_wedge(
         ..Default::default()
     };
     let fingerprint = fingerprint(spec, rigid, at);
-    let saved = checkpoint.map(|c| c.path()).filter(|p| p.exists());
-    // A resumed run's particles come from the checkpoint: its scene is built unpacked.
-    let mut scene = build(hull, &if saved.is_some() { cfg.unpacked() } else { cfg.clone() })?;
+    // A checkpoint of this configuration is resumed (one of another is overwritten by a fresh run); a resumed
+    // run's particles come from it, so its scene is built unpacked and not settled.
+    let resume = match checkpoint.map(|c| c.path()).filter(|p| p.exists()) {
+        Some(path) => {
+            let same = checkpoint::peek::<WedgeProgress>(&path, &fingerprint)?.0;
+            if !same {
+                log::warn!("{}: of another configuration, starting afresh", path.display());
+            }
+            same.then_some(path)
+        }
+        None => None,
+    };
+    let mut scene = build(hull, &if resume.is_some() { cfg.unpacked() } else { cfg })?;
     let v = scene.profile.u * spec.slope;
     // The stem is at x = 0, the section's start (x0).
     let t_touch = scene.profile.t_at(X_TOUCH);
@@ -224,23 +234,13 @@ pub fn run_wedge(
         targets: targets.into_iter().rev().collect(),
         ..Default::default()
     };
-    let restored = match &saved {
-        Some(path) => checkpoint::restore(path, &fingerprint, &mut scene.sim)?.map(|p| (path, p)),
-        None => None,
-    };
-    match (restored, &saved) {
-        (Some((path, p)), _) => {
+    match &resume {
+        Some(path) => {
+            progress = checkpoint::restore(path, &fingerprint, &mut scene.sim)?
+                .ok_or_else(|| anyhow::anyhow!("{}: changed while being read", path.display()))?;
             log::info!("{}: going on from step {}", path.display(), scene.sim.steps);
-            progress = p;
         }
-        (None, saved) => {
-            if let Some(path) = saved {
-                log::warn!("{}: of another configuration, starting afresh", path.display());
-                scene = build(Arc::new(HullSurface::new(&spec.offsets())), &cfg)?;
-                if rigid {
-                    scene.sim.boundaries[1] = rigid_wedge(spec, &scene);
-                }
-            }
+        None => {
             scene.settle()?;
         }
     }
@@ -530,6 +530,7 @@ pub fn compare(
     }))
 }
 
+/// Prints the comparison as a table with the differences.
 pub fn print(c: &WedgeComparison) {
     print_wagner(c);
     print_similarity(c);
