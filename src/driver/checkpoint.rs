@@ -10,7 +10,8 @@
 use super::{Flow, Halted, Observer};
 use crate::io::checkpoint::Checkpoint;
 use crate::sph::particles::Fluid;
-use crate::sph::solver::{SimState, Simulation};
+pub use crate::sph::solver::Clock;
+use crate::sph::solver::Simulation;
 use nalgebra::SVector;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
@@ -105,38 +106,6 @@ pub fn take_fluid<const D: usize>(c: &Checkpoint, path: &Path, axes: &Axes<D>) -
     })
 }
 
-/// The solver's clock, what a step depends on besides the particles; in a checkpoint's header, its fields at
-/// the header's top level (`#[serde(flatten)]`).
-#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
-pub struct Clock {
-    pub time: f64,
-    pub steps: u64,
-    pub last_dt: f64,
-    pub wall_corrections: u64,
-}
-
-impl Clock {
-    pub fn of<const D: usize>(sim: &Simulation<D>) -> Self {
-        Clock {
-            time: sim.time,
-            steps: sim.steps,
-            last_dt: sim.last_dt,
-            wall_corrections: sim.wall_corrections,
-        }
-    }
-
-    /// The state to restore: these particles at this clock.
-    pub fn with<const D: usize>(self, fluid: Fluid<D>) -> SimState<D> {
-        SimState {
-            fluid,
-            time: self.time,
-            steps: self.steps,
-            last_dt: self.last_dt,
-            wall_corrections: self.wall_corrections,
-        }
-    }
-}
-
 #[derive(Serialize, Deserialize)]
 struct Header<P> {
     fingerprint: String,
@@ -164,7 +133,7 @@ pub fn save<const D: usize, P: Serialize>(
     put_fluid(&mut c, &sim.fluid, &axes::<D>());
     c.header = serde_json::to_value(Header {
         fingerprint: fingerprint.to_string(),
-        clock: Clock::of(sim),
+        clock: sim.clock(),
         progress,
     })?;
     c.write(path)

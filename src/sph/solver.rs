@@ -290,10 +290,28 @@ pub struct StageTimings {
 #[derive(Clone, Debug)]
 pub struct SimState<const D: usize> {
     pub fluid: Fluid<D>,
+    pub clock: Clock,
+}
+
+/// The solver's clock: what a step depends on besides the particles (the time step's growth is bounded by
+/// the last one, [`Simulation::last_dt`]). A checkpoint header holds it with its fields at the top level.
+#[derive(Clone, Copy, Debug, serde::Serialize, serde::Deserialize)]
+pub struct Clock {
+    /// Simulated time, s.
     pub time: f64,
+    /// Steps taken since the start.
     pub steps: u64,
+    /// The last step's length, s.
     pub last_dt: f64,
+    /// Particles put back out of a wall since the start ([`Boundary::keep_out`]).
     pub wall_corrections: u64,
+}
+
+impl Clock {
+    /// The state to restore: these particles at this clock.
+    pub fn with<const D: usize>(self, fluid: Fluid<D>) -> SimState<D> {
+        SimState { fluid, clock: self }
+    }
 }
 
 /// A running simulation.
@@ -372,8 +390,12 @@ impl<const D: usize> Simulation<D> {
 
     /// What the next steps depend on (see [`SimState`]).
     pub fn state(&self) -> SimState<D> {
-        SimState {
-            fluid: self.fluid.clone(),
+        self.clock().with(self.fluid.clone())
+    }
+
+    /// The clock alone (see [`Clock`]).
+    pub fn clock(&self) -> Clock {
+        Clock {
             time: self.time,
             steps: self.steps,
             last_dt: self.last_dt,
@@ -385,10 +407,10 @@ impl<const D: usize> Simulation<D> {
     /// are the same bits as those that followed it.
     pub fn set_state(&mut self, s: SimState<D>) {
         self.fluid = s.fluid;
-        self.time = s.time;
-        self.steps = s.steps;
-        self.last_dt = s.last_dt;
-        self.wall_corrections = s.wall_corrections;
+        self.time = s.clock.time;
+        self.steps = s.clock.steps;
+        self.last_dt = s.clock.last_dt;
+        self.wall_corrections = s.clock.wall_corrections;
     }
 
     /// Number of fluid particles.

@@ -156,7 +156,7 @@ pub fn save(path: &Path, fingerprint: &str, scene: &Scene, p: &Passage, wall: f6
     });
     c.header = serde_json::to_value(Header {
         fingerprint: fingerprint.to_string(),
-        clock: Clock::of(sim),
+        clock: sim.clock(),
         packing: scene.packing,
         steps0: p.steps0,
         total_mass: p.total_mass,

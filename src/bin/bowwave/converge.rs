@@ -1,6 +1,6 @@
 //! `converge`: a case at several resolutions, with the observed order and a Richardson estimate.
 
-use crate::options::{checkpoint_policy, halted};
+use crate::options::{halted, CheckpointArgs};
 use anyhow::Context;
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
@@ -24,20 +24,19 @@ pub struct ConvergeArgs {
     /// twodt: hull offsets file.
     #[arg(long, default_value = "hulls/athena.csv")]
     pub hull: PathBuf,
-    /// twodt: fine spacings dx/L, coarse to fine (the thesis's Athena study: 2.7e-4,1.9e-4,1.35e-4).
+    /// twodt: fine spacings dx/L, coarse to fine (the thesis's Athena study: 2.7e-4,1.9e-4,1.35e-4). Each
+    /// runs in OUT/dx-*: the same command run again reuses finished spacings (their converge_run.json) and
+    /// goes on with a halted one from its checkpoint.
     #[arg(long, value_delimiter = ',', default_values_t = vec![3e-3, 2e-3, 1.333e-3])]
     pub dx: Vec<f64>,
     /// twodt: gather finished `bowwave twodt` runs (their folders, coarse to fine, comma separated)
     /// instead of running the ladder.
     #[arg(long, value_delimiter = ',')]
     pub runs: Vec<PathBuf>,
-    /// twodt: minutes between checkpoints of the running spacing (0: none); run the same command again
-    /// to go on from it. Finished spacings (OUT/dx-*/converge_run.json) are reused.
-    #[arg(long, default_value_t = 10.0)]
-    pub checkpoint_every: f64,
-    /// twodt: stop after this many minutes of wall time with a checkpoint (exit status 3).
-    #[arg(long)]
-    pub wall_limit: Option<f64>,
+    /// twodt: checkpoints of the running spacing (OUT/dx-*), and when to stop saved; the same command run
+    /// again goes on, reusing finished spacings (OUT/dx-*/converge_run.json).
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
     /// The options of each 2D+t run (as `bowwave twodt`'s).
     #[command(flatten, next_help_heading = "2D+t options (converge twodt)")]
     pub config: bowwave::twodt::config::TwoDtConfig,
@@ -64,7 +63,7 @@ impl ConvergeArgs {
             let out = self
                 .out
                 .unwrap_or_else(|| PathBuf::from("out").join(format!("converge-twodt-{}-fr{fr}", offsets.meta.name)));
-            let policy = checkpoint_policy(self.checkpoint_every, self.wall_limit, true)?;
+            let policy = self.checkpoint.passage_policy(true)?;
             match twodt_convergence::converge_twodt(surface, &base, &self.dx, &out, &policy, true)? {
                 Ended::Ran(conv) => (conv, out),
                 Ended::Halted(h) => return Ok(halted(&h)),

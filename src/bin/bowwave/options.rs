@@ -24,27 +24,12 @@ pub fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duratio
     Ok((m > 0.0).then(|| std::time::Duration::from_secs_f64(60.0 * m)))
 }
 
-/// The checkpoint policy of `--checkpoint-every` and `--wall-limit` (minutes), shared by twodt, converge and
-/// study.
-pub fn checkpoint_policy(
-    every: f64,
-    wall_limit: Option<f64>,
-    resume: bool,
-) -> anyhow::Result<bowwave::twodt::checkpoint::CheckpointPolicy> {
-    Ok(bowwave::twodt::checkpoint::CheckpointPolicy {
-        every: minutes("--checkpoint-every", every)?,
-        resume,
-        wall_limit: wall_limit.map(|w| minutes("--wall-limit", w)).transpose()?.flatten(),
-        halt_at_step: None,
-    })
-}
-
-/// `--checkpoint-every` and `--wall-limit` of a run that saves itself in its folder (`ship`, `bent-wall-3d`,
-/// `wedge`).
+/// `--checkpoint-every` and `--wall-limit`, the same for every command whose runs save themselves in their
+/// folders (`twodt`, `study`, `converge twodt`, `ship`, `bent-wall-3d`, `wedge`).
 #[derive(clap::Args)]
 pub struct CheckpointArgs {
-    /// Minutes of wall time between checkpoints (checkpoint.bin in the run's folder; 0: none). The same command
-    /// run again goes on from the checkpoint, to the same bits.
+    /// Minutes of wall time between checkpoints (checkpoint.bin in the run's folder: a study's case, a
+    /// ladder's spacing; 0: none). The same command run again goes on from the checkpoint, to the same bits.
     #[arg(long, default_value_t = 10.0)]
     pub checkpoint_every: f64,
     /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
@@ -63,6 +48,18 @@ impl CheckpointArgs {
             .transpose()?
             .flatten();
         Ok((every, wall_limit))
+    }
+
+    /// The policy of a 2D+t passage (`twodt`, `study`, `converge twodt`), which saves in its output folder;
+    /// `resume`: go on from a checkpoint found there.
+    pub fn passage_policy(&self, resume: bool) -> anyhow::Result<bowwave::twodt::checkpoint::CheckpointPolicy> {
+        let (every, wall_limit) = self.limits()?;
+        Ok(bowwave::twodt::checkpoint::CheckpointPolicy {
+            every,
+            resume,
+            wall_limit,
+            halt_at_step: None,
+        })
     }
 
     /// The policy saving into `dir`; `None` when neither option asks for one.

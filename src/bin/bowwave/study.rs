@@ -1,6 +1,6 @@
 //! `study`: a Froude sweep from a study file, resumable, gathered into tables, figures and a report.
 
-use crate::options::checkpoint_policy;
+use crate::options::CheckpointArgs;
 use bowwave::studies;
 use clap::Args;
 use std::path::PathBuf;
@@ -19,7 +19,7 @@ pub struct StudyArgs {
     /// Do not run anything: gather the finished cases into the tables and figures.
     #[arg(long)]
     pub collect: bool,
-    /// Recompute finished cases.
+    /// Recompute finished cases, and start a case in progress afresh (its checkpoint ignored).
     #[arg(long)]
     pub force: bool,
     /// Print each case's particle count, estimated steps and run time, and run nothing.
@@ -30,15 +30,10 @@ pub struct StudyArgs {
     /// pace so far; or not started), and run nothing.
     #[arg(long)]
     pub status: bool,
-    /// Minutes of wall time between checkpoints of the running case (CASE/checkpoint.bin; 0: none): an
-    /// interrupted study loses at most this much of the case in progress, and goes on from it when run
-    /// again (to the same bits). `--force` ignores checkpoints too.
-    #[arg(long, default_value_t = 10.0)]
-    pub checkpoint_every: f64,
-    /// Stop the case in progress after this many minutes of wall time, saving a checkpoint (a batch job's
-    /// time limit); run the same command again to go on.
-    #[arg(long)]
-    pub wall_limit: Option<f64>,
+    /// Checkpoints of the case in progress (CASE/checkpoint.bin: an interrupted study loses at most
+    /// `--checkpoint-every` of it), and when to stop saved; `--force` ignores checkpoints too.
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
     /// Cases run at the same time, each with threads/jobs worker threads (default 1: every thread inside
     /// one case, measured faster on 2 cores, see docs/reference/studies.md).
     #[arg(long, default_value_t = 1)]
@@ -74,7 +69,7 @@ impl StudyArgs {
                 threads: rayon::current_num_threads(),
                 progress: !self.quiet,
                 // `resume` is set per case by the runner (not with --force).
-                checkpoint: checkpoint_policy(self.checkpoint_every, self.wall_limit, true)?,
+                checkpoint: self.checkpoint.passage_policy(true)?,
             };
             let ran = studies::runner::run_cases(&study, &opts)?;
             println!("{} case(s) run", ran.finished);

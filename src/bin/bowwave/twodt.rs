@@ -1,7 +1,7 @@
 //! `twodt` (one hull at one Froude number, from the stem to the plunge) and `wedge` (the 2D+t machinery
 //! against a rigid wedge entry and Wagner theory).
 
-use crate::options::{checkpoint_policy, halted, CheckpointArgs, BLEW_UP};
+use crate::options::{halted, CheckpointArgs, BLEW_UP};
 use bowwave::driver::Ended;
 use bowwave::geometry::{hull_file::HullOffsets, surface::HullSurface};
 use bowwave::twodt;
@@ -24,14 +24,9 @@ pub struct TwodtArgs {
     /// Output folder (default: out/twodt-HULL-frFR).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Minutes of wall time between checkpoints (OUT/checkpoint.bin: the particles and the run's state;
-    /// 0: none). A run started again with the same options goes on from its checkpoint, to the same bits.
-    #[arg(long, default_value_t = 10.0)]
-    pub checkpoint_every: f64,
-    /// Stop after this many minutes of wall time, saving a checkpoint (a batch job's time limit); run
-    /// the same command again to go on.
-    #[arg(long)]
-    pub wall_limit: Option<f64>,
+    /// Checkpoints in OUT (the particles and the passage's state), and when to stop saved.
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
     /// Ignore a checkpoint in the output folder and start from the beginning.
     #[arg(long)]
     pub fresh: bool,
@@ -60,7 +55,7 @@ impl TwodtArgs {
             plots: true,
             multi: None,
             label: format!("{} Fr {fr} ", offsets.meta.name),
-            checkpoint: checkpoint_policy(self.checkpoint_every, self.wall_limit, !self.fresh)?,
+            checkpoint: self.checkpoint.passage_policy(!self.fresh)?,
         };
         let r = match twodt::run::run(surface, &cfg, &opts)? {
             Ended::Ran(r) => r,
