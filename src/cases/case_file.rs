@@ -202,7 +202,8 @@ pub struct Numerics {
     /// exact kernel on the dam break and the 2D+t chart for 10–25 % less CPU (docs/reference/speed-accuracy.md).
     #[serde(default = "default_kernel_table")]
     pub kernel_table: bool,
-    /// "none" (the default, the thesis's δ-SPH) or "sun2017": particle shifting after each step
+    /// "none" (the default, the thesis's δ-SPH), "sun2017" or "sun2017-walls": particle shifting after each
+    /// step, everywhere or only within two kernel supports of a wall and away from the free surface
     /// (`sph::particle_shifting`).
     #[serde(default)]
     pub shifting: crate::sph::particle_shifting::ParticleShifting,

@@ -54,11 +54,12 @@ fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         "table" => n.kernel_table = true,
         "exact-kernel" => n.kernel_table = false,
         "sun2017" => n.shifting = crate::sph::particle_shifting::ParticleShifting::Sun2017,
+        "sun2017-walls" => n.shifting = crate::sph::particle_shifting::ParticleShifting::Sun2017Walls,
         "no-shifting" => n.shifting = crate::sph::particle_shifting::ParticleShifting::None,
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, no-shifting, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, no-shifting, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
                 )
             })?;
             let x: f64 = v

@@ -13,6 +13,10 @@
 //! position to first order with the renormalised gradient of eq. (4.19) (ρ_i += ∇ρ_i · δr_i); the velocity is
 //! not corrected (the paper's simple form).
 //!
+//! `sun2017-walls` ([`ParticleShifting::Sun2017Walls`], ours) applies the same shift only to the particles within
+//! two kernel supports of a wall ghost (the water the ghosts' MLS values read) that are not within a support of
+//! the free surface; everything else stays Lagrangian, as in the thesis's δ-SPH.
+//!
 //! Why it is here (issue #35): at a stagnation point that the flow leaves a wall from, the Lagrangian particles
 //! move apart along the outflow and a void opens over the fixed ghosts; the ghosts' MLS values, extrapolated
 //! into the void, over-read the pressure by a factor up to 2.8 (`jet-floor`) and the dam break's corner by
@@ -34,6 +38,11 @@ pub enum ParticleShifting {
     None,
     /// Sun et al. (2017), δ⁺-SPH.
     Sun2017,
+    /// The same shift, applied only to the particles within two kernel supports of a wall ghost (those the
+    /// ghosts' MLS values read) and not within a support of the free surface: the remedy where the defect is
+    /// (the void that opens over the fixed ghosts under a stagnation point), the rest of the water, the free
+    /// surface and a wall's contact line left Lagrangian (ours; issue #35).
+    Sun2017Walls,
 }
 
 impl std::str::FromStr for ParticleShifting {
@@ -42,7 +51,8 @@ impl std::str::FromStr for ParticleShifting {
         match s {
             "none" => Ok(Self::None),
             "sun2017" => Ok(Self::Sun2017),
-            v => Err(format!("expected `none` or `sun2017`, got `{v}`")),
+            "sun2017-walls" => Ok(Self::Sun2017Walls),
+            v => Err(format!("expected `none`, `sun2017` or `sun2017-walls`, got `{v}`")),
         }
     }
 }
@@ -52,6 +62,7 @@ impl std::fmt::Display for ParticleShifting {
         f.write_str(match self {
             Self::None => "none",
             Self::Sun2017 => "sun2017",
+            Self::Sun2017Walls => "sun2017-walls",
         })
     }
 }
@@ -103,6 +114,17 @@ pub fn shift_from_sum<const D: usize>(
     d
 }
 
+/// What one step's shift depends on besides the particles.
+#[derive(Clone, Copy, Debug)]
+pub struct ShiftStep {
+    /// The particle spacing Δx (m): W(Δx) of the anti-clumping term, and the cap [`CAP`] Δx.
+    pub dx: f64,
+    /// U_max Δt (m): the largest fluid speed times the step.
+    pub u_max_dt: f64,
+    /// Shift only near the walls, away from the free surface ([`ParticleShifting::Sun2017Walls`]).
+    pub walls_only: bool,
+}
+
 /// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
 /// that takes no part), for a step of U_max Δt = `u_max_dt`. A first pass over the neighbours gathers the
 /// shift's sum and the matrix and vector of §7.2 (λ and the normal, as [`super::free_surface::detect`]
@@ -115,37 +137,59 @@ pub fn displacements<const D: usize>(
     pos: &[SVector<f64, D>],
     volume: &[f64],
     n_fluid: usize,
-    dx: f64,
-    u_max_dt: f64,
+    step: ShiftStep,
 ) -> Vec<SVector<f64, D>> {
+    let ShiftStep {
+        dx,
+        u_max_dt,
+        walls_only,
+    } = step;
     let w_dx = kernel.w(dx);
     let coef = A * kernel.h * u_max_dt;
-    let sums: Vec<(SVector<f64, D>, f64, SVector<f64, D>)> = (0..n_fluid)
+    let sums: Vec<(SVector<f64, D>, f64, SVector<f64, D>, bool)> = (0..n_fluid)
         .into_par_iter()
         .map(|i| {
             let mut surface = SurfaceSums::<D>::new();
             let mut sum = SVector::<f64, D>::zeros();
+            let mut near_wall = false;
             cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
                 if j == i || volume[j] == 0.0 {
                     return;
                 }
+                near_wall |= j >= n_fluid;
                 let gw = kernel.grad(&rij, r);
                 surface.add(&gw, &rij, volume[j]);
                 let f = 1.0 + R * (kernel.w(r) / w_dx).powi(N);
                 sum += gw * (f * volume[j]);
             });
             let (lambda, normal) = surface.lambda_and_normal();
-            (sum, lambda, normal)
+            (sum, lambda, normal, near_wall)
         })
         .collect();
     let on_surface = |j: usize| j < n_fluid && sums[j].1 <= LAMBDA_SURFACE;
     (0..n_fluid)
         .into_par_iter()
         .map(|i| {
-            let (sum, lambda, normal) = &sums[i];
+            let (sum, lambda, normal, near_wall) = &sums[i];
+            if walls_only && !near_wall {
+                // Within two supports of a wall: the particles the ghosts' MLS values read (a ghost's mirror
+                // point lies within a support of the wall, and its fit within a support of that).
+                let mut within_two = false;
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
+                    within_two |= j < n_fluid && sums[j].3
+                });
+                if !within_two {
+                    return SVector::zeros();
+                }
+            }
             let mut near_surface = on_surface(i);
             if !near_surface {
                 cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
+            }
+            if walls_only && near_surface {
+                // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
+                // contact line (ours: the sloshing gauges at the walls read −7 % / +5 % with it).
+                return SVector::zeros();
             }
             shift_from_sum(sum, coef, *lambda, near_surface, normal, dx)
         })
@@ -173,5 +217,85 @@ mod tests {
         // The cap: at most CAP dx.
         let d = shift_from_sum(&s, 1.0, 0.9, false, &n, 1.0);
         assert!((d.norm() - CAP).abs() < 1e-12);
+    }
+}
+
+#[cfg(test)]
+mod wall_band_tests {
+    use super::*;
+    use crate::sph::kernel::KernelKind;
+    use nalgebra::Vector2;
+
+    /// `sun2017-walls` moves only the particles within two kernel supports of a wall ghost and away from the
+    /// free surface, each by exactly the shift `sun2017` gives it; the rest of the water does not move.
+    #[test]
+    fn wall_band_shift_is_the_full_shift_within_two_supports_of_a_wall_and_zero_beyond() {
+        let dx = 0.1;
+        let kernel = Kernel::<2>::new(KernelKind::RenormalizedGaussian, 1.33 * dx);
+        // A block of water 40 dx high over a floor of ghosts (four rows), its lattice perturbed so every sum is
+        // non-zero; volumes dx².
+        let (nx, ny) = (30, 40);
+        let mut pos = vec![];
+        for j in 0..ny {
+            for i in 0..nx {
+                let wobble = 0.05 * dx * (((7 * i + 13 * j) % 11) as f64 / 11.0 - 0.5);
+                pos.push(Vector2::new(
+                    (i as f64 + 0.5) * dx + wobble,
+                    (j as f64 + 0.5) * dx - wobble,
+                ));
+            }
+        }
+        let n_fluid = pos.len();
+        for j in 0..4 {
+            for i in 0..nx {
+                pos.push(Vector2::new((i as f64 + 0.5) * dx, -(j as f64 + 0.5) * dx));
+            }
+        }
+        let volume = vec![dx * dx; pos.len()];
+        let cells = CellList::build(&pos, kernel.support);
+        let step = |walls_only| ShiftStep {
+            dx,
+            u_max_dt: 0.01 * dx,
+            walls_only,
+        };
+        let full = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(false));
+        let band = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(true));
+        let (mut moved, mut still, mut surface) = (0, 0, 0);
+        let width = nx as f64 * dx;
+        for i in 0..n_fluid {
+            let (x, y) = (pos[i].x, pos[i].y);
+            let interior = x > 2.0 * kernel.support && x < width - 2.0 * kernel.support;
+            if y < kernel.support && interior {
+                assert_eq!(
+                    band[i], full[i],
+                    "particle {i} at ({x}, {y}): within a support of the floor"
+                );
+                moved += (band[i] != Vector2::zeros()) as usize;
+            } else if y > 2.0 * kernel.support {
+                assert_eq!(
+                    band[i],
+                    Vector2::zeros(),
+                    "particle {i} at ({x}, {y}): beyond two supports"
+                );
+                still += (full[i] != Vector2::zeros()) as usize;
+            } else if x < 0.5 * kernel.support || x > width - 0.5 * kernel.support {
+                // On the block's sides, free surfaces: the band leaves them where they are.
+                assert_eq!(
+                    band[i],
+                    Vector2::zeros(),
+                    "particle {i} at ({x}, {y}): at the free surface"
+                );
+                surface += (full[i] != Vector2::zeros()) as usize;
+            } else {
+                assert!(
+                    band[i] == full[i] || band[i] == Vector2::zeros(),
+                    "particle {i}: all or nothing"
+                );
+            }
+        }
+        assert!(
+            moved > 0 && still > 0 && surface > 0,
+            "the case must shift near the floor ({moved}), away from it ({still}) and at the surface ({surface})"
+        );
     }
 }

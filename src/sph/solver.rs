@@ -915,8 +915,11 @@ impl<const D: usize> Simulation<D> {
             &self.all_pos,
             &volume,
             nf,
-            self.cfg.dx,
-            u_max * dt,
+            particle_shifting::ShiftStep {
+                dx: self.cfg.dx,
+                u_max_dt: u_max * dt,
+                walls_only: self.cfg.shifting == ParticleShifting::Sun2017Walls,
+            },
         );
         let t = self.time;
         let boundaries = &self.boundaries;

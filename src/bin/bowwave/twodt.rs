@@ -90,7 +90,7 @@ pub struct WedgeArgs {
     /// at 2, the scene's default, the bottom lies 2 Vt below the apex at the last default sample).
     #[arg(long, default_value_t = 2.0)]
     pub depth: f64,
-    /// Particle shifting after each step: none (the default) or sun2017 (docs/reference/method.md).
+    /// Particle shifting after each step: none (the default), sun2017 or sun2017-walls (docs/reference/method.md).
     #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::None)]
     pub shifting: bowwave::sph::particle_shifting::ParticleShifting,
     /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder; each run saves
