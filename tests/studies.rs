@@ -745,7 +745,7 @@ fn a_3d_study_tows_the_hull_beside_its_2dt_partner_at_one_spacing() {
     towed.checkpoint = Some(bowwave::compare3d::towed_ship::CheckpointPolicy {
         dir: case.join("ship3d"),
         every: std::time::Duration::MAX,
-        wall_limit: None,
+        deadline: None,
         halt_at_step: Some(3),
     });
     assert!(matches!(

@@ -279,7 +279,7 @@ fn resumed_towed_ship_gives_the_same_bits_as_an_uninterrupted_one() {
     opts.checkpoint = Some(CheckpointPolicy {
         dir: dir.clone(),
         every: std::time::Duration::MAX,
-        wall_limit: None,
+        deadline: None,
         halt_at_step: Some(30),
     });
     opts.frames = Some(bowwave::compare3d::towed_ship::Frames {

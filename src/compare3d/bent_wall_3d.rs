@@ -845,7 +845,7 @@ mod tests {
         let policy = |n: u64| CheckpointPolicy {
             dir: dir.clone(),
             every: std::time::Duration::MAX,
-            wall_limit: None,
+            deadline: None,
             halt_at_step: Some(n),
         };
         let Ended::Halted(_) = run(&ch, &o, Some(&policy(2)), false).unwrap() else {

@@ -30,8 +30,9 @@ pub struct CheckpointPolicy {
     pub dir: PathBuf,
     /// Wall time between two saves.
     pub every: Duration,
-    /// Save and stop once this session has used this much wall time.
-    pub wall_limit: Option<Duration>,
+    /// Save and stop at the first step from this instant on: the command's start plus its `--wall-limit`, so
+    /// that the set-up before the run's first step (building, packing, settling) counts against the limit too.
+    pub deadline: Option<Instant>,
     /// Save and stop once the run has taken this many steps (tests; jobs split by steps).
     pub halt_at_step: Option<u64>,
 }
@@ -204,8 +205,7 @@ impl<const D: usize, P: RunProgress> Observer<Simulation<D>> for Saver<'_, P> {
         let Some(c) = self.policy else {
             return Ok(Flow::Step);
         };
-        let halt =
-            c.wall_limit.is_some_and(|w| self.clock.elapsed() >= w) || c.halt_at_step.is_some_and(|n| sim.steps >= n);
+        let halt = c.deadline.is_some_and(|d| Instant::now() >= d) || c.halt_at_step.is_some_and(|n| sim.steps >= n);
         if halt || self.last_save.elapsed() >= c.every {
             let path = c.path();
             let mut st = self.state.borrow().clone();
@@ -221,5 +221,60 @@ impl<const D: usize, P: RunProgress> Observer<Simulation<D>> for Saver<'_, P> {
             }
         }
         Ok(Flow::Step)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sph::body_force::BodyForce;
+    use crate::sph::solver::SolverConfig;
+    use nalgebra::Vector2;
+
+    #[derive(Clone, Serialize, Deserialize)]
+    struct Wall(f64);
+    impl RunProgress for Wall {
+        fn set_wall_before(&mut self, seconds: f64) {
+            self.0 = seconds;
+        }
+    }
+
+    /// Regression: `--wall-limit` was counted from the observer's creation, after the run's set-up (a 10° wedge at
+    /// dx/L 5e-4 packed and settled for 17 minutes before it, so it halted 17 minutes late). The limit is now an
+    /// instant fixed when the command starts: one that passed during the set-up halts the run at its first step.
+    #[test]
+    fn a_wall_limit_that_passed_during_the_set_up_halts_at_the_first_step() {
+        let dx = 0.1;
+        let cfg = SolverConfig::new(dx, 1000.0, 10.0, BodyForce::Uniform(Vector2::zeros()));
+        let mut fluid = Fluid::default();
+        for i in 0..4 {
+            fluid.push(Vector2::new(i as f64 * dx, 0.0), Vector2::zeros(), 1000.0, 10.0, 0.0);
+        }
+        let mut sim = Simulation::new(cfg, fluid, vec![]);
+        let dir = std::env::temp_dir().join(format!("bowwave-deadline-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let policy = |deadline| CheckpointPolicy {
+            dir: dir.clone(),
+            every: Duration::MAX,
+            deadline,
+            halt_at_step: None,
+        };
+        let state = RefCell::new(Wall(0.0));
+        let at = |t: f64| format!("t = {t}");
+        let passed = policy(Some(Instant::now()));
+        std::thread::sleep(Duration::from_millis(5)); // the set-up
+        let mut saver = Saver::new(Some(&passed), "f", &state, 0.0, &at);
+        assert!(
+            matches!(saver.observe(&mut sim).unwrap(), Flow::Halt(_)),
+            "the deadline passed: halt"
+        );
+        assert!(passed.path().exists(), "halted with the state saved");
+        let later = policy(Some(Instant::now() + Duration::from_secs(3600)));
+        let mut saver = Saver::new(Some(&later), "f", &state, 0.0, &at);
+        assert!(
+            matches!(saver.observe(&mut sim).unwrap(), Flow::Step),
+            "an hour left: step on"
+        );
+        std::fs::remove_dir_all(&dir).ok();
     }
 }

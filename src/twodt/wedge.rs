@@ -489,7 +489,7 @@ fn run_or_recall(
     let policy = CheckpointPolicy {
         dir,
         every: w.every,
-        wall_limit: w.deadline.map(|d| d.saturating_duration_since(Instant::now())),
+        deadline: w.deadline,
         halt_at_step: w.halt_at_step,
     };
     let ended = run_wedge(spec, rigid, at, Some(&policy))?;

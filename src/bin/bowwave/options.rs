@@ -72,7 +72,7 @@ impl CheckpointArgs {
             (every.is_some() || wall_limit.is_some()).then(|| bowwave::driver::checkpoint::CheckpointPolicy {
                 dir: dir.to_path_buf(),
                 every: every.unwrap_or(std::time::Duration::MAX),
-                wall_limit,
+                deadline: wall_limit.map(|w| std::time::Instant::now() + w),
                 halt_at_step: None,
             }),
         )
