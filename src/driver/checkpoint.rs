@@ -240,7 +240,7 @@ mod tests {
     }
 
     /// Regression: `--wall-limit` was counted from the observer's creation, after the run's set-up (a 10° wedge at
-    /// dx/L 5e-4 packed and settled for 17 minutes before it, so it halted 17 minutes late). The limit is now an
+    /// dx/L 5e-4 packed and settled for 8 minutes before it, so it halted 8 minutes late). The limit is now an
     /// instant fixed when the command starts: one that passed during the set-up halts the run at its first step.
     #[test]
     fn a_wall_limit_that_passed_during_the_set_up_halts_at_the_first_step() {
