@@ -390,3 +390,37 @@ fn time_step_collapse_names_the_particle_of_the_largest_acceleration() {
     start.sort_by_key(key);
     assert_eq!(kept, start, "the state before the step is kept");
 }
+
+/// Regression: `--wall-limit` (and `--checkpoint-every`) of more minutes than a `Duration` holds panicked in
+/// `Duration::from_secs_f64`; now an error naming the option. A limit a `Duration` holds but the clock cannot
+/// reach (1e15 minutes) means no limit instead of an overflow of the deadline.
+#[test]
+fn a_wall_limit_too_large_for_a_clock_is_an_error_not_a_panic() {
+    let out = std::env::temp_dir().join(format!("bowwave-huge-limit-{}", std::process::id()));
+    let run = |limit: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_bowwave"))
+            .args([
+                "wedge",
+                "--dx",
+                "3e-3",
+                "--at",
+                "0.005",
+                "--checkpoint-every",
+                "0",
+                "--wall-limit",
+                limit,
+                "--out",
+            ])
+            .arg(&out)
+            .output()
+            .expect("bowwave runs")
+    };
+    let huge = run("1e300");
+    let err = String::from_utf8_lossy(&huge.stderr);
+    assert_eq!(huge.status.code(), Some(1), "{err}");
+    assert!(err.contains("--wall-limit") && err.contains("expected"), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    let far = run("1e15");
+    assert!(far.status.success(), "{}", String::from_utf8_lossy(&far.stderr));
+    std::fs::remove_dir_all(&out).ok();
+}

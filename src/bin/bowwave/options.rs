@@ -21,7 +21,12 @@ pub fn minutes(option: &str, m: f64) -> anyhow::Result<Option<std::time::Duratio
     if !(m.is_finite() && m >= 0.0) {
         anyhow::bail!("{option} {m}: expected a number of minutes, 0 or more");
     }
-    Ok((m > 0.0).then(|| std::time::Duration::from_secs_f64(60.0 * m)))
+    if m == 0.0 {
+        return Ok(None);
+    }
+    std::time::Duration::try_from_secs_f64(60.0 * m)
+        .map(Some)
+        .map_err(|_| anyhow::anyhow!("{option} {m}: expected a number of minutes a clock can hold, at most about 3e17"))
 }
 
 /// `--checkpoint-every` and `--wall-limit`, the same for every command whose runs save themselves in their
@@ -72,7 +77,7 @@ impl CheckpointArgs {
             (every.is_some() || wall_limit.is_some()).then(|| bowwave::driver::checkpoint::CheckpointPolicy {
                 dir: dir.to_path_buf(),
                 every: every.unwrap_or(std::time::Duration::MAX),
-                deadline: wall_limit.map(|w| std::time::Instant::now() + w),
+                deadline: wall_limit.and_then(|w| std::time::Instant::now().checked_add(w)),
                 halt_at_step: None,
             }),
         )

@@ -123,7 +123,7 @@ impl WedgeArgs {
         let saving = self.out.as_ref().map(|out| twodt::wedge::WedgeCheckpoints {
             dir: out.join("runs"),
             every: every.unwrap_or(std::time::Duration::MAX),
-            deadline: wall_limit.map(|w| started + w),
+            deadline: wall_limit.and_then(|w| started.checked_add(w)),
             halt_at_step: None,
             fresh: self.fresh,
         });
