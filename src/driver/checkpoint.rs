@@ -22,6 +22,12 @@ use std::time::{Duration, Instant};
 /// File name of the checkpoint in a run's output folder.
 pub const FILE: &str = "checkpoint.bin";
 
+/// The deadline of a run given `wall_limit` from now, the command's start: `None` without a limit or with one
+/// beyond the clock's range.
+pub fn deadline(wall_limit: Option<Duration>) -> Option<Instant> {
+    wall_limit.and_then(|w| Instant::now().checked_add(w))
+}
+
 /// Where and how often a run saves itself, and when it stops saved.
 #[derive(Clone, Debug)]
 pub struct CheckpointPolicy {

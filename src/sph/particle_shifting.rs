@@ -171,20 +171,19 @@ pub fn displacements<const D: usize>(
         .into_par_iter()
         .map(|i| {
             let (sum, lambda, normal, near_wall) = &sums[i];
-            if walls_only && !near_wall {
-                // Within two supports of a wall: the particles the ghosts' MLS values read (a ghost's mirror
-                // point lies within a support of the wall, and its fit within a support of that).
-                let mut within_two = false;
-                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
-                    within_two |= j < n_fluid && sums[j].3
-                });
-                if !within_two {
-                    return SVector::zeros();
-                }
-            }
+            // One scan for both: within a support of a surface particle, and (for the band) within two
+            // supports of a wall, i.e. the particles the ghosts' MLS values read (a ghost's mirror point lies
+            // within a support of the wall, and its fit within a support of that).
             let mut near_surface = on_surface(i);
-            if !near_surface {
-                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
+            let mut within_two = *near_wall;
+            if !near_surface || (walls_only && !within_two) {
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
+                    near_surface |= on_surface(j);
+                    within_two |= j < n_fluid && sums[j].3;
+                });
+            }
+            if walls_only && !within_two {
+                return SVector::zeros();
             }
             if walls_only && near_surface {
                 // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
@@ -199,6 +198,7 @@ pub fn displacements<const D: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sph::kernel::KernelKind;
     use nalgebra::Vector2;
 
     #[test]
@@ -218,13 +218,6 @@ mod tests {
         let d = shift_from_sum(&s, 1.0, 0.9, false, &n, 1.0);
         assert!((d.norm() - CAP).abs() < 1e-12);
     }
-}
-
-#[cfg(test)]
-mod wall_band_tests {
-    use super::*;
-    use crate::sph::kernel::KernelKind;
-    use nalgebra::Vector2;
 
     /// `sun2017-walls` moves only the particles within two kernel supports of a wall ghost and away from the
     /// free surface, each by exactly the shift `sun2017` gives it; the rest of the water does not move.

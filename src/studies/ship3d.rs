@@ -63,7 +63,7 @@ pub fn run(
     opts.checkpoint = Some(towed_ship::CheckpointPolicy {
         dir: dir.clone(),
         every: every.unwrap_or(Duration::MAX),
-        deadline: wall_limit.and_then(|w| std::time::Instant::now().checked_add(w)),
+        deadline: crate::driver::checkpoint::deadline(wall_limit),
         halt_at_step: None,
     });
     let r = match towed_ship::run(&opts, progress)? {

@@ -275,9 +275,8 @@ pub struct TwoDtConfig {
     pub diffusion: DensityDiffusion,
     /// Particle shifting after each step: none (the thesis's δ-SPH) or sun2017 (δ⁺-SPH, Sun et al. 2017:
     /// removes the fixed ghosts' over-pressure where the flow leaves a wall or turns a corner, as the run-up
-    /// does at the keel) or sun2017-walls (the same shift only within two kernel supports of a wall, away from the
-    /// free surface;
-    /// docs/reference/method.md, "Particle shifting").
+    /// does at the keel) or sun2017-walls (the same shift only within two kernel supports of a wall, away
+    /// from the free surface; docs/reference/method.md, "Particle shifting").
     #[arg(long, default_value_t = d().shifting)]
     pub shifting: ParticleShifting,
     /// Evaluate the Gaussian kernel's gradient at every pair instead of from its table in r² (the table

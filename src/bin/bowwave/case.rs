@@ -36,7 +36,8 @@ pub struct RunArgs {
     /// Particle shifting after each step, overriding the case file: `none` (the thesis's δ-SPH, the default)
     /// or `sun2017` (the δ⁺-SPH shifting of Sun et al. 2017, which removes the fixed ghosts' over-pressure at
     /// stagnation points and corners) or `sun2017-walls` (the same shift only within two kernel supports of a
-    /// wall and away from the free surface, where that over-pressure comes from; docs/reference/method.md, "Particle shifting").
+    /// wall and away from the free surface, where that over-pressure comes from; docs/reference/method.md,
+    /// "Particle shifting").
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
     /// A physical kinematic viscosity ν in m²/s (eq. 5.3) in place of the case's viscosity; e.g. the dam break
@@ -51,8 +52,8 @@ pub struct RunArgs {
     pub wall_slip: Option<WallSlip>,
     /// A method variant applied to the case before the options above, by the names of `chart speed-accuracy
     /// --variants`: delta-sph, molteni, wcsph, wendland (Wendland C2 at h = 2 dx), pc, rk4, table, exact-kernel,
-    /// images, fixed-ghosts, sun2017, sun2017-walls, no-shifting, alpha=A, delta=D, cfl=C, h=H (h/dx), joined by `+` to
-    /// combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
+    /// images, fixed-ghosts, sun2017, sun2017-walls, no-shifting, alpha=A, delta=D, cfl=C, h=H (h/dx), joined
+    /// by `+` to combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
     #[arg(long)]
     pub variant: Option<String>,
     /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls

@@ -77,7 +77,7 @@ impl CheckpointArgs {
             (every.is_some() || wall_limit.is_some()).then(|| bowwave::driver::checkpoint::CheckpointPolicy {
                 dir: dir.to_path_buf(),
                 every: every.unwrap_or(std::time::Duration::MAX),
-                deadline: wall_limit.and_then(|w| std::time::Instant::now().checked_add(w)),
+                deadline: bowwave::driver::checkpoint::deadline(wall_limit),
                 halt_at_step: None,
             }),
         )

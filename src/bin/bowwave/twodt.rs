@@ -119,11 +119,10 @@ impl WedgeArgs {
             self.out.is_some() || wall_limit.is_none(),
             "--wall-limit: needs --out, the folder the runs save themselves in"
         );
-        let started = std::time::Instant::now();
         let saving = self.out.as_ref().map(|out| twodt::wedge::WedgeCheckpoints {
             dir: out.join("runs"),
             every: every.unwrap_or(std::time::Duration::MAX),
-            deadline: wall_limit.and_then(|w| started.checked_add(w)),
+            deadline: bowwave::driver::checkpoint::deadline(wall_limit),
             halt_at_step: None,
             fresh: self.fresh,
         });
