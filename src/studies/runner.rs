@@ -236,6 +236,8 @@ pub struct Ran {
     pub finished: usize,
     /// Cases stopped at the wall-time limit with a checkpoint: the same command goes on from them.
     pub halted: Vec<Halted>,
+    /// Cases not started because the wall-time limit had passed when their turn came.
+    pub not_started: usize,
 }
 
 /// Runs the cases that are not finished yet (or all with `force`, or only `case`), then rewrites the
@@ -293,6 +295,10 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<Ran> {
                     }
                 };
                 loop {
+                    // The limit is the command's: a case whose turn comes after it waits for the next command.
+                    if opts.checkpoint.deadline.is_some_and(|d| std::time::Instant::now() >= d) {
+                        break;
+                    }
                     let Some(spec) = queue.lock().expect("lock").pop() else {
                         break;
                     };
@@ -318,7 +324,9 @@ pub fn run_cases(study: &Study, opts: &StudyOptions) -> anyhow::Result<Ran> {
     overall.finish_and_clear();
     let errors = errors.into_inner().expect("lock");
     anyhow::ensure!(errors.is_empty(), "{}", errors.join("\n"));
-    Ok(ran.into_inner().expect("lock"))
+    let mut ran = ran.into_inner().expect("lock");
+    ran.not_started = queue.into_inner().expect("lock").len();
+    Ok(ran)
 }
 
 /// Runs one case into its folder and records it; `Some` when it halted with a checkpoint.
@@ -356,7 +364,7 @@ fn run_one(
                 spec.fr(),
                 ship,
                 &dir,
-                (c.every, c.wall_limit, opts.force),
+                (c.every, c.deadline, opts.force),
                 opts.progress,
             )? {
                 Ended::Ran(r) => Some(r),

@@ -43,14 +43,14 @@ pub struct Ship3dRecord {
 }
 
 /// Runs the 3D side of a case whose 2D+t run has written `case_dir/eta.csv`: checkpoints in `case_dir/ship3d/`
-/// every `every` (none with `None`), a stop with the state saved after `wall_limit`, a fresh start with `fresh`
+/// every `every` (none with `None`), a stop with the state saved once `deadline` has passed, a fresh start with `fresh`
 /// (`--force`); then its tables, maps and `summary.txt` there, and its record.
 pub fn run(
     hull: &HullSurface,
     fr: f64,
     ship: &Ship3d,
     case_dir: &Path,
-    (every, wall_limit, fresh): (Option<Duration>, Option<Duration>, bool),
+    (every, deadline, fresh): (Option<Duration>, Option<std::time::Instant>, bool),
     progress: bool,
 ) -> anyhow::Result<Ended<Ship3dRecord>> {
     let two = towed_ship::read_twodt_eta(case_dir)?;
@@ -63,7 +63,7 @@ pub fn run(
     opts.checkpoint = Some(towed_ship::CheckpointPolicy {
         dir: dir.clone(),
         every: every.unwrap_or(Duration::MAX),
-        deadline: crate::driver::checkpoint::deadline(wall_limit),
+        deadline,
         halt_at_step: None,
     });
     let r = match towed_ship::run(&opts, progress)? {

@@ -14,7 +14,7 @@ use crate::io::csv_table::Table;
 use nalgebra::Vector2;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// File name of the checkpoint in a run's output folder.
 pub const FILE: &str = "checkpoint.bin";
@@ -26,15 +26,16 @@ pub struct CheckpointPolicy {
     pub every: Option<Duration>,
     /// Go on from the folder's checkpoint when there is one of the same configuration.
     pub resume: bool,
-    /// Save and stop once this session of the run has used this much wall time (a batch job's limit), at the
-    /// next plunge check (within `detect_every` steps).
-    pub wall_limit: Option<Duration>,
+    /// Save and stop once this instant has passed (a batch job's limit, `--wall-limit` counted from the
+    /// command's start, [`crate::driver::checkpoint::deadline`]), at the next plunge check (within
+    /// `detect_every` steps). A study's cases share it: one that starts after it halts at its first check.
+    pub deadline: Option<Instant>,
     /// Save and stop at the first plunge check with at least this many time steps done (tests; jobs split by
     /// steps).
     pub halt_at_step: Option<u64>,
 }
 
-/// A run stopped on purpose ([`CheckpointPolicy::wall_limit`] or `halt_at_step`), its state saved.
+/// A run stopped on purpose ([`CheckpointPolicy::deadline`] or `halt_at_step`), its state saved.
 #[derive(Debug, thiserror::Error)]
 #[error("stopped at x/L = {x:.4} after {steps} steps, the state saved in {}: run the same command again to go on", .checkpoint.display())]
 pub struct Halted {

@@ -123,7 +123,7 @@ impl Observer<TwoDtRun> for Checkpoints<'_> {
         let policy = self.policy;
         let halt = may_save
             && (policy.halt_at_step.is_some_and(|h| run.scene.sim.steps >= h)
-                || policy.wall_limit.is_some_and(|w| self.clock.elapsed() >= w));
+                || policy.deadline.is_some_and(|d| Instant::now() >= d));
         let due = |e: Duration| self.last_save.elapsed() >= e;
         if halt || (may_save && policy.every.is_some_and(due)) {
             let wall = run.p.wall_before + self.clock.elapsed().as_secs_f64();

@@ -37,8 +37,9 @@ pub struct CheckpointArgs {
     /// ladder's spacing; 0: none). The same command run again goes on from the checkpoint, to the same bits.
     #[arg(long, default_value_t = 10.0)]
     pub checkpoint_every: f64,
-    /// Stop after this many minutes of wall time with the state saved (exit status 3); run the same command
-    /// again to go on.
+    /// Stop after this many minutes of wall time, counted from the command's start (a study's cases share
+    /// them; a case whose turn comes later is not started), with the state saved (exit status 3); run the same
+    /// command again to go on.
     #[arg(long)]
     pub wall_limit: Option<f64>,
 }
@@ -62,7 +63,7 @@ impl CheckpointArgs {
         Ok(bowwave::twodt::checkpoint::CheckpointPolicy {
             every,
             resume,
-            wall_limit,
+            deadline: bowwave::driver::checkpoint::deadline(wall_limit),
             halt_at_step: None,
         })
     }

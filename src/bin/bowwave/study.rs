@@ -59,7 +59,7 @@ impl StudyArgs {
             print_status(&study, &out)?;
             return Ok(std::process::ExitCode::SUCCESS);
         }
-        let mut halted_cases = vec![];
+        let (mut halted_cases, mut not_started) = (vec![], 0);
         if !self.collect {
             let opts = studies::runner::StudyOptions {
                 out_dir: out.clone(),
@@ -73,7 +73,7 @@ impl StudyArgs {
             };
             let ran = studies::runner::run_cases(&study, &opts)?;
             println!("{} case(s) run", ran.finished);
-            halted_cases = ran.halted;
+            (halted_cases, not_started) = (ran.halted, ran.not_started);
         }
         let n = studies::collect_all(&study, &out)?;
         println!(
@@ -87,7 +87,17 @@ impl StudyArgs {
                 for h in &halted_cases[1..] {
                     eprintln!("{h}");
                 }
+                if not_started > 0 {
+                    eprintln!("{not_started} case(s) not started: the wall-time limit had passed");
+                }
                 crate::options::halted(first)
+            }
+            None if not_started > 0 => {
+                eprintln!(
+                    "{not_started} case(s) not started: the wall-time limit had passed; run the same command \
+                     again to go on"
+                );
+                std::process::ExitCode::from(3)
             }
             None => std::process::ExitCode::SUCCESS,
         })
