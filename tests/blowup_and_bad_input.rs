@@ -135,7 +135,12 @@ fn particle_shifting_with_several_phases_is_refused() {
     };
     let e = shift.apply(&mut case).expect_err("shifting with phases").to_string();
     assert!(e.contains("--shifting") && e.contains("two-layer"), "{e}");
-    assert_eq!(case.numerics.shifting, ParticleShifting::None, "refused, so unchanged");
+    assert_eq!(case.numerics.shifting, None, "refused, so unchanged");
+    assert_eq!(
+        case.shifting(),
+        ParticleShifting::None,
+        "with phases the default is none"
+    );
     let none = CaseOverrides {
         shifting: Some(ParticleShifting::None),
         ..Default::default()
@@ -143,11 +148,14 @@ fn particle_shifting_with_several_phases_is_refused() {
     none.apply(&mut case).expect("`none` is what is expected");
     let cfg = bowwave::twodt::config::TwoDtConfig {
         air: Some(1.5),
-        shifting: ParticleShifting::Sun2017,
+        shifting: Some(ParticleShifting::Sun2017Walls),
         ..Default::default()
     };
     let e = cfg.check().expect_err("an air layer with shifting");
     assert_eq!(e.option, bowwave::twodt::config::ConfigOption::Air, "{e}");
+    let air = bowwave::twodt::config::TwoDtConfig { shifting: None, ..cfg };
+    air.check().expect("an air layer with the default shifting");
+    assert_eq!(air.shifting(), ParticleShifting::None, "with air the default is none");
 }
 
 #[test]

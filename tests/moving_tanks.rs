@@ -70,7 +70,7 @@ fn heave(shifting: ParticleShifting) {
         )
         .replace("end_time = 15.97", "end_time = 6.0");
     let mut case = CaseFile::parse(&text, "heave test").unwrap();
-    case.numerics.shifting = shifting;
+    case.numerics.shifting = Some(shifting);
     assert!(case.walls[0].motion.is_some());
     let r = run_case(&case, Some(20.0));
     let t = r.series.column("t").unwrap();
@@ -207,7 +207,7 @@ fn roll(shifting: ParticleShifting) {
         .replace("end_time = 3.545", "end_time = 6.0")
         .replace("series_every = 0.01", "series_every = 0.05");
     let mut case = CaseFile::parse(&text, "roll test").unwrap();
-    case.numerics.shifting = shifting;
+    case.numerics.shifting = Some(shifting);
     let r = run_case(&case, Some(15.0));
     let t = r.series.column("t").unwrap();
     let p = r.series.column("p_left").unwrap();

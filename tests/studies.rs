@@ -373,10 +373,6 @@ fn dry_run_prices_a_case_with_air_at_the_airs_sound_speed() {
     assert!(est[1].particles > est[0].particles);
 }
 
-/// A study whose case is stopped part-way (as by a kill or a batch time limit, after a checkpoint) and run
-/// again ends with the same tables as one that ran through: jets.csv (timing columns aside) and
-/// comparison.csv are identical.
-
 /// `study --wall-limit` is the command's limit, counted once from its start, not each case's from the case's
 /// own start (session 47's review: with a per-case limit a study of N cases could run N limits): a case whose
 /// turn comes after the limit is not started, and the command says so.
@@ -399,6 +395,10 @@ fn a_study_wall_limit_is_the_commands_not_each_cases() {
     assert!(runner::collect_finished(&study, &out).is_empty());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A study whose case is stopped part-way (as by a kill or a batch time limit, after a checkpoint) and run
+/// again ends with the same tables as one that ran through: jets.csv (timing columns aside) and
+/// comparison.csv are identical.
 #[test]
 fn stopped_study_resumes_to_the_same_tables_as_an_uninterrupted_one() {
     let (study, dir) = fresh_study(

@@ -202,11 +202,12 @@ pub struct Numerics {
     /// exact kernel on the dam break and the 2D+t chart for 10–25 % less CPU (docs/reference/speed-accuracy.md).
     #[serde(default = "default_kernel_table")]
     pub kernel_table: bool,
-    /// "none" (the default, the thesis's δ-SPH), "sun2017" or "sun2017-walls": particle shifting after each
-    /// step, everywhere or only within two kernel supports of a wall and away from the free surface
-    /// (`sph::particle_shifting`).
-    #[serde(default)]
-    pub shifting: crate::sph::particle_shifting::ParticleShifting,
+    /// "sun2017-walls", "sun2017" or "none": particle shifting after each step only within two kernel supports
+    /// of a wall and away from the free surface, everywhere, or not at all (the thesis's δ-SPH)
+    /// (`sph::particle_shifting`). Unset: "sun2017-walls" with one phase, "none" with `[[phases]]`
+    /// ([`CaseFile::shifting`], docs/decisions/wall-band-shifting.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shifting: Option<crate::sph::particle_shifting::ParticleShifting>,
     /// "free-slip" (the default, the thesis's for impact flows) or "no-slip": every wall holds the fluid in the
     /// viscous term (thesis §7.1.3), meant with `viscosity = { kind = "physical", nu = … }`.
     #[serde(default)]
@@ -495,6 +496,14 @@ pub enum TimeUnit {
 }
 
 impl CaseFile {
+    /// The particle shifting the case runs with: `numerics.shifting`, or when unset the default for its
+    /// number of phases ([`crate::sph::particle_shifting::default_for`]).
+    pub fn shifting(&self) -> crate::sph::particle_shifting::ParticleShifting {
+        self.numerics
+            .shifting
+            .unwrap_or_else(|| crate::sph::particle_shifting::default_for(!self.phases.is_empty()))
+    }
+
     /// Gives every wall ghosts of kind `kind` (the CLI's `--ghosts`).
     pub fn set_ghosts(&mut self, kind: crate::sph::polyline_wall::GhostKind) {
         for w in &mut self.walls {
@@ -657,7 +666,12 @@ impl CaseFile {
                 "a non-negative ε_I (Grenier et al.: 0.01–0.1; 0 is off)",
             ));
         }
-        if !self.phases.is_empty() && self.numerics.shifting != crate::sph::particle_shifting::ParticleShifting::None {
+        if !self.phases.is_empty()
+            && self
+                .numerics
+                .shifting
+                .is_some_and(|s| s != crate::sph::particle_shifting::ParticleShifting::None)
+        {
             return Err(err("numerics.shifting", crate::sph::particle_shifting::WITH_PHASES));
         }
         if self.probes.interface_tips && self.phases.is_empty() {

@@ -38,7 +38,7 @@ impl CaseOverrides {
                     crate::sph::particle_shifting::WITH_PHASES
                 );
             }
-            case.numerics.shifting = s;
+            case.numerics.shifting = Some(s);
         }
         if let Some(nu) = self.nu {
             case.numerics.viscosity = Viscosity::Physical { nu };

@@ -57,7 +57,7 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     cfg.dt_floor = 1e-3 * cfg.h / c0;
     cfg.ghost_interpolation = n.ghost_interpolation;
     cfg.kernel_table = n.kernel_table;
-    cfg.shifting = n.shifting;
+    cfg.shifting = case.shifting();
     cfg.wall_slip = n.wall_slip;
     cfg.multi_fluid = multi_fluid(case, &cfg.eos);
     cfg

@@ -53,9 +53,9 @@ fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         }
         "table" => n.kernel_table = true,
         "exact-kernel" => n.kernel_table = false,
-        "sun2017" => n.shifting = crate::sph::particle_shifting::ParticleShifting::Sun2017,
-        "sun2017-walls" => n.shifting = crate::sph::particle_shifting::ParticleShifting::Sun2017Walls,
-        "no-shifting" => n.shifting = crate::sph::particle_shifting::ParticleShifting::None,
+        "sun2017" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017),
+        "sun2017-walls" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017Walls),
+        "no-shifting" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::None),
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(

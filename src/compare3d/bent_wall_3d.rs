@@ -402,8 +402,20 @@ pub const AGREEMENT_OVER_H: f64 = 0.1;
 
 fn fingerprint(ch: &BentWallOptions, o: &Tow3dOptions) -> String {
     format!(
-        "bent wall 3D Fr_H {} L {} W {} res {} c0 {:?} ramp {} settle {} ahead {} behind {} top {} sample {}",
-        ch.fr_h, ch.length, ch.width, ch.res, ch.c0, o.ramp, o.settle, o.ahead, o.behind, o.top, o.sample
+        "bent wall 3D Fr_H {} L {} W {} res {} c0 {:?} ramp {} settle {} ahead {} behind {} top {} sample {} \
+         shifting {}",
+        ch.fr_h,
+        ch.length,
+        ch.width,
+        ch.res,
+        ch.c0,
+        o.ramp,
+        o.settle,
+        o.ahead,
+        o.behind,
+        o.top,
+        o.sample,
+        crate::sph::particle_shifting::ParticleShifting::default()
     )
 }
 

@@ -55,6 +55,9 @@ pub struct ShipTank {
     /// Sound speed c0/√(g D): 10 keeps the density within about 1 % at the keel at rest (Mach 0.1 for a flow
     /// of √(g D)).
     pub c0_over_sqrt_gd: f64,
+    /// Particle shifting after each step: the solver's default (the near-wall band), or a study's 2D+t
+    /// configuration's, so that both models of a case run the same method.
+    pub shifting: crate::sph::particle_shifting::ParticleShifting,
 }
 
 /// The scene, built: the simulation (boundary 0 the tank, 1 the hull) and what its measures need.
@@ -83,6 +86,7 @@ impl ShipTank {
             tank_ghosts: GhostKind::Fixed,
             motion: RigidMotion::Fixed,
             c0_over_sqrt_gd: 10.0,
+            shifting: Default::default(),
         }
     }
 
@@ -121,6 +125,7 @@ impl ShipTank {
         let c0 = self.c0_over_sqrt_gd * (G * d).sqrt();
         let mut cfg = SolverConfig::new(dx, RHO0, c0, BodyForce::Uniform(V3::new(0.0, 0.0, -G)));
         cfg.domain = Some((lo - (hi - lo), hi + (hi - lo)));
+        cfg.shifting = self.shifting;
         let support = cfg.kernel.support_over_h() * cfg.h;
 
         // Before anything is allocated: the tank must hold the hull with water around it (one row at least), and the machine the

@@ -61,6 +61,9 @@ pub struct TowedShip {
     pub frames: Option<Frames>,
     /// Where and how often to save the run's state, and when to stop with it saved (None: never).
     pub checkpoint: Option<CheckpointPolicy>,
+    /// Particle shifting after each step (default the near-wall band; a study's 3D side takes its 2D+t
+    /// configuration's).
+    pub shifting: crate::sph::particle_shifting::ParticleShifting,
 }
 
 /// ParaView frames of a towed run, in the Earth frame (the hull moves along −x through the tank):
@@ -195,6 +198,7 @@ impl TowedShip {
             depth_over_d: o.depth,
             frames: None,
             checkpoint: None,
+            shifting: Default::default(),
         }
     }
 }
@@ -245,7 +249,7 @@ impl TowedShip {
     /// What identifies the configuration (a checkpoint of another one is not resumed).
     pub fn fingerprint(&self) -> String {
         format!(
-            "{} fr {} D/dx {} ramp {} travel {}–{} steady {} over {} sample {} behind {} tank {} B {} D",
+            "{} fr {} D/dx {} ramp {} travel {}–{} steady {} over {} sample {} behind {} tank {} B {} D shifting {}",
             self.hull.meta.name,
             self.fr,
             self.d_over_dx,
@@ -257,7 +261,8 @@ impl TowedShip {
             self.sample_over_l,
             self.behind_over_l,
             self.half_width_over_b,
-            self.depth_over_d
+            self.depth_over_d,
+            self.shifting
         )
     }
 }
@@ -347,6 +352,7 @@ fn scene(opts: &TowedShip) -> anyhow::Result<(ShipScene, f64)> {
     tank.depth_over_d = opts.depth_over_d;
     tank.c0_over_sqrt_gd = c0_over_sqrt_gl / d_over_l.sqrt();
     tank.motion = tank_motion(opts, l);
+    tank.shifting = opts.shifting;
     Ok((tank.build()?, c0_over_sqrt_gl))
 }
 

@@ -33,16 +33,28 @@ use rayon::prelude::*;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum ParticleShifting {
-    /// None: the thesis's δ-SPH (the default).
-    #[default]
+    /// None: the thesis's δ-SPH; the default with several phases, which the shift would mix
+    /// ([`default_for`]).
     None,
     /// Sun et al. (2017), δ⁺-SPH.
     Sun2017,
     /// The same shift, applied only to the particles within two kernel supports of a wall ghost (those the
     /// ghosts' MLS values read) and not within a support of the free surface: the remedy where the defect is
     /// (the void that opens over the fixed ghosts under a stagnation point), the rest of the water, the free
-    /// surface and a wall's contact line left Lagrangian (ours; issue #35).
+    /// surface and a wall's contact line left Lagrangian (ours; issue #35). The default of a single-phase
+    /// scene (docs/decisions/wall-band-shifting.md).
+    #[default]
     Sun2017Walls,
+}
+
+/// The default shifting of a scene: [`ParticleShifting::Sun2017Walls`] with one phase, none with several
+/// (a case's `[[phases]]`, the 2D+t air layer: [`WITH_PHASES`]).
+pub fn default_for(several_phases: bool) -> ParticleShifting {
+    if several_phases {
+        ParticleShifting::None
+    } else {
+        ParticleShifting::Sun2017Walls
+    }
 }
 
 impl std::str::FromStr for ParticleShifting {
@@ -115,14 +127,17 @@ pub fn shift_from_sum<const D: usize>(
 }
 
 /// What one step's shift depends on besides the particles.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct ShiftStep {
     /// The particle spacing Δx (m): W(Δx) of the anti-clumping term, and the cap [`CAP`] Δx.
     pub dx: f64,
     /// U_max Δt (m): the largest fluid speed times the step.
     pub u_max_dt: f64,
-    /// Shift only near the walls, away from the free surface ([`ParticleShifting::Sun2017Walls`]).
-    pub walls_only: bool,
+    /// [`ParticleShifting::Sun2017Walls`]: shift only within two kernel supports of these ghosts (their indices
+    /// in `pos`: the fixed ghosts, whose lattice the void opens over) and away from the free surface. Image
+    /// ghosts mirror the fluid and leave no void: a band around them only disturbs the flow they mirror (the
+    /// `jet-wall` corner with image ghosts at b/dx 10 reads Cp 1.042 with it, 0.994 without). `None`: everywhere.
+    pub band_ghosts: Option<std::ops::Range<usize>>,
 }
 
 /// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
@@ -142,8 +157,10 @@ pub fn displacements<const D: usize>(
     let ShiftStep {
         dx,
         u_max_dt,
-        walls_only,
+        band_ghosts,
     } = step;
+    let walls_only = band_ghosts.is_some();
+    let band_ghosts = band_ghosts.unwrap_or(0..0);
     let w_dx = kernel.w(dx);
     let coef = A * kernel.h * u_max_dt;
     let sums: Vec<(SVector<f64, D>, f64, SVector<f64, D>, bool)> = (0..n_fluid)
@@ -156,7 +173,7 @@ pub fn displacements<const D: usize>(
                 if j == i || volume[j] == 0.0 {
                     return;
                 }
-                near_wall |= j >= n_fluid;
+                near_wall |= band_ghosts.contains(&j);
                 let gw = kernel.grad(&rij, r);
                 surface.add(&gw, &rij, volume[j]);
                 let f = 1.0 + R * (kernel.w(r) / w_dx).powi(N);
@@ -219,8 +236,9 @@ mod tests {
         assert!((d.norm() - CAP).abs() < 1e-12);
     }
 
-    /// `sun2017-walls` moves only the particles within two kernel supports of a wall ghost and away from the
-    /// free surface, each by exactly the shift `sun2017` gives it; the rest of the water does not move.
+    /// `sun2017-walls` moves only the particles within two kernel supports of a fixed wall ghost and away from
+    /// the free surface, each by exactly the shift `sun2017` gives it; the rest of the water does not move, and
+    /// nothing moves over image ghosts.
     #[test]
     fn wall_band_shift_is_the_full_shift_within_two_supports_of_a_wall_and_zero_beyond() {
         let dx = 0.1;
@@ -246,13 +264,19 @@ mod tests {
         }
         let volume = vec![dx * dx; pos.len()];
         let cells = CellList::build(&pos, kernel.support);
-        let step = |walls_only| ShiftStep {
+        let step = |band_ghosts| ShiftStep {
             dx,
             u_max_dt: 0.01 * dx,
-            walls_only,
+            band_ghosts,
         };
-        let full = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(false));
-        let band = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(true));
+        let full = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(None));
+        let band = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(Some(n_fluid..pos.len())));
+        // The same floor of image ghosts (no fixed ghost): no band, nothing moves.
+        let images = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(Some(n_fluid..n_fluid)));
+        assert!(
+            images.iter().all(|d| *d == Vector2::zeros()),
+            "a band around image ghosts"
+        );
         let (mut moved, mut still, mut surface) = (0, 0, 0);
         let width = nx as f64 * dx;
         for i in 0..n_fluid {

@@ -71,7 +71,9 @@ pub struct SolverConfig<const D: usize> {
     /// always exact). Default true: the dam-break and 2D+t charts show the same error as the exact kernel for
     /// 10–25 % less CPU (docs/reference/speed-accuracy.md); `false` is the `exact-kernel` variant.
     pub kernel_table: bool,
-    /// Particle shifting after each step; default none (the thesis's δ-SPH).
+    /// Particle shifting after each step; default the near-wall band ([`ParticleShifting::Sun2017Walls`],
+    /// docs/decisions/wall-band-shifting.md); it must be none with `multi_fluid`
+    /// ([`particle_shifting::WITH_PHASES`]).
     pub shifting: ParticleShifting,
     /// Free slip (the default, the thesis's for impact flows) or no slip in the viscous term (§7.1.3).
     pub wall_slip: WallSlip,
@@ -117,7 +119,7 @@ impl<const D: usize> SolverConfig<D> {
             dt_floor: 1e-3 * h / c0,
             ghost_interpolation: GhostInterpolation::Mls,
             kernel_table: true,
-            shifting: ParticleShifting::None,
+            shifting: ParticleShifting::default(),
             wall_slip: WallSlip::FreeSlip,
             multi_fluid: None,
         }
@@ -353,6 +355,12 @@ pub struct Simulation<const D: usize> {
 
 impl<const D: usize> Simulation<D> {
     pub fn new(cfg: SolverConfig<D>, fluid: Fluid<D>, boundaries: Vec<Box<dyn Boundary<D>>>) -> Self {
+        // Users' settings are refused before this (case files, the 2D+t configuration); this is a caller's slip.
+        assert!(
+            cfg.multi_fluid.is_none() || cfg.shifting == ParticleShifting::None,
+            "several phases need {}",
+            particle_shifting::WITH_PHASES
+        );
         let kernel = Kernel::new(cfg.kernel, cfg.h);
         let grad_table = if cfg.kernel_table {
             GradientTable::new(&kernel)
@@ -918,7 +926,8 @@ impl<const D: usize> Simulation<D> {
             particle_shifting::ShiftStep {
                 dx: self.cfg.dx,
                 u_max_dt: u_max * dt,
-                walls_only: self.cfg.shifting == ParticleShifting::Sun2017Walls,
+                band_ghosts: (self.cfg.shifting == ParticleShifting::Sun2017Walls)
+                    .then(|| nf..nf + self.ghosts.n_fixed),
             },
         );
         let t = self.time;

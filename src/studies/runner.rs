@@ -363,6 +363,7 @@ fn run_one(
                 &hull,
                 spec.fr(),
                 ship,
+                spec.config.shifting(),
                 &dir,
                 (c.every, c.deadline, opts.force),
                 opts.progress,

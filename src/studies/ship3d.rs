@@ -43,12 +43,13 @@ pub struct Ship3dRecord {
 }
 
 /// Runs the 3D side of a case whose 2D+t run has written `case_dir/eta.csv`: checkpoints in `case_dir/ship3d/`
-/// every `every` (none with `None`), a stop with the state saved once `deadline` has passed, a fresh start with `fresh`
+/// with the 2D+t run's `shifting`, every `every` (none with `None`), a stop with the state saved once `deadline` has passed, a fresh start with `fresh`
 /// (`--force`); then its tables, maps and `summary.txt` there, and its record.
 pub fn run(
     hull: &HullSurface,
     fr: f64,
     ship: &Ship3d,
+    shifting: crate::sph::particle_shifting::ParticleShifting,
     case_dir: &Path,
     (every, deadline, fresh): (Option<Duration>, Option<std::time::Instant>, bool),
     progress: bool,
@@ -60,6 +61,7 @@ pub fn run(
         let _ = std::fs::remove_file(dir.join(crate::compare3d::towed_checkpoint::FILE));
     }
     let mut opts = TowedShip::with_options(hull.clone(), fr, ship);
+    opts.shifting = shifting;
     opts.checkpoint = Some(towed_ship::CheckpointPolicy {
         dir: dir.clone(),
         every: every.unwrap_or(Duration::MAX),

@@ -273,12 +273,13 @@ pub struct TwoDtConfig {
     /// method comparisons.
     #[arg(long, default_value_t = d().diffusion)]
     pub diffusion: DensityDiffusion,
-    /// Particle shifting after each step: none (the thesis's δ-SPH) or sun2017 (δ⁺-SPH, Sun et al. 2017:
-    /// removes the fixed ghosts' over-pressure where the flow leaves a wall or turns a corner, as the run-up
-    /// does at the keel) or sun2017-walls (the same shift only within two kernel supports of a wall, away
-    /// from the free surface; docs/reference/method.md, "Particle shifting").
-    #[arg(long, default_value_t = d().shifting)]
-    pub shifting: ParticleShifting,
+    /// Particle shifting after each step: sun2017-walls (the shift of Sun et al. 2017 only within two kernel
+    /// supports of a wall, away from the free surface: it removes the fixed ghosts' over-pressure where the
+    /// flow leaves a wall or turns a corner, as the run-up does at the keel), sun2017 (everywhere, δ⁺-SPH) or
+    /// none (the thesis's δ-SPH). Default: sun2017-walls, or none with --air (docs/reference/method.md,
+    /// "Particle shifting"; docs/decisions/wall-band-shifting.md).
+    #[arg(long)]
+    pub shifting: Option<ParticleShifting>,
     /// Evaluate the Gaussian kernel's gradient at every pair instead of from its table in r² (the table
     /// changes positions by about 1e-6 dx for 10–25 % less CPU; docs/reference/speed-accuracy.md).
     #[arg(long)]
@@ -339,7 +340,7 @@ impl Default for TwoDtConfig {
             plunge_circulation: PlungeCirculation::AtLeast(0.02),
             output_dx: 0.005,
             diffusion: DensityDiffusion::DeltaSph,
-            shifting: ParticleShifting::None,
+            shifting: None,
             exact_kernel: false,
             cfl: None,
             alpha: None,
@@ -519,7 +520,7 @@ impl TwoDtConfig {
         if !(self.air_background >= 0.0 && self.air_background <= 10.0) {
             return fail(O::AirBackground, "in [0, 10]", &self.air_background);
         }
-        if self.air.is_some() && self.shifting != ParticleShifting::None {
+        if self.air.is_some() && self.shifting.is_some_and(|s| s != ParticleShifting::None) {
             return fail(
                 O::Air,
                 crate::sph::particle_shifting::WITH_PHASES,
@@ -527,6 +528,13 @@ impl TwoDtConfig {
             );
         }
         Ok(())
+    }
+
+    /// The particle shifting the run uses: `shifting`, or when unset the default for one phase or, with `air`,
+    /// two ([`crate::sph::particle_shifting::default_for`]).
+    pub fn shifting(&self) -> ParticleShifting {
+        self.shifting
+            .unwrap_or_else(|| crate::sph::particle_shifting::default_for(self.air.is_some()))
     }
 
     /// The same configuration without the packing: for building a scene whose particles come from elsewhere
@@ -543,10 +551,13 @@ impl TwoDtConfig {
     /// The configuration with the output-only options (VTK, frames) at their defaults: what a checkpoint or
     /// a finished spacing of a convergence ladder must match to be reused (writing frames or not does not
     /// change the run).
+    /// The shifting is written resolved (`Some`): a checkpoint of the thesis's method, saved when no shifting
+    /// was the default, is not taken for one of today's default.
     pub fn physics(&self) -> TwoDtConfig {
         TwoDtConfig {
             vtk: false,
             frames: false,
+            shifting: Some(self.shifting()),
             ..self.clone()
         }
     }
@@ -584,6 +595,27 @@ mod tests {
         };
         let t = toml::to_string(&set).unwrap();
         assert_eq!(toml::from_str::<TwoDtConfig>(&t).unwrap(), set, "{t}");
+    }
+
+    /// Regression (session 48): the default shifting became the near-wall band while an unset shifting kept
+    /// the Debug text `None`, the text of the old default `ParticleShifting::None`: an unshifted checkpoint would
+    /// have been resumed with the band.
+    #[test]
+    fn a_checkpoint_of_the_old_unshifted_default_is_not_taken_for_todays_default() {
+        let old_default = format!("{:?}", ParticleShifting::None);
+        let today = format!("{:?}", TwoDtConfig::default().physics().shifting);
+        assert_ne!(today, old_default);
+        assert!(today.contains("Sun2017Walls"), "{today}");
+        let explicit = TwoDtConfig {
+            shifting: Some(ParticleShifting::Sun2017Walls),
+            ..Default::default()
+        };
+        assert_eq!(explicit.physics(), TwoDtConfig::default().physics());
+        let air = TwoDtConfig {
+            air: Some(1.5),
+            ..Default::default()
+        };
+        assert_eq!(air.physics().shifting, Some(ParticleShifting::None));
     }
 
     #[test]

@@ -262,7 +262,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     cfg_s.h = h;
     cfg_s.diffusion = cfg.diffusion;
     cfg_s.kernel_table = !cfg.exact_kernel;
-    cfg_s.shifting = cfg.shifting;
+    cfg_s.shifting = cfg.shifting();
     if let Some(alpha) = cfg.alpha {
         cfg_s.viscosity = Viscosity::Artificial { alpha };
     }

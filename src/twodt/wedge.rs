@@ -38,7 +38,7 @@ pub struct WedgeSpec {
     pub c0: Option<f64>,
     /// Water depth / `penetration` (the scene's Z/D; the similarity solution is for infinite depth).
     pub depth_over_draft: f64,
-    /// Particle shifting after each step (default none).
+    /// Particle shifting after each step (default the near-wall band, as every single-phase scene).
     pub shifting: crate::sph::particle_shifting::ParticleShifting,
 }
 
@@ -205,7 +205,7 @@ pub fn run_wedge(
         until: Until::X(x_end),
         c0: spec.c0,
         depth_over_draft: spec.depth_over_draft,
-        shifting: spec.shifting,
+        shifting: Some(spec.shifting),
         ..Default::default()
     };
     let fingerprint = fingerprint(spec, rigid, at);

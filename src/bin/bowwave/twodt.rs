@@ -90,8 +90,9 @@ pub struct WedgeArgs {
     /// at 2, the scene's default, the bottom lies 2 Vt below the apex at the last default sample).
     #[arg(long, default_value_t = 2.0)]
     pub depth: f64,
-    /// Particle shifting after each step: none (the default), sun2017 or sun2017-walls (docs/reference/method.md).
-    #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::None)]
+    /// Particle shifting after each step: sun2017-walls (the default: within two kernel supports of a wall,
+    /// away from the free surface), sun2017 (everywhere) or none (docs/reference/method.md).
+    #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::default())]
     pub shifting: bowwave::sph::particle_shifting::ParticleShifting,
     /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder; each run saves
     /// itself in its own folder under OUT/runs (a checkpoint while it runs, its samples once finished), so the
