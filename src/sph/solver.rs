@@ -72,7 +72,7 @@ pub struct SolverConfig<const D: usize> {
     /// 10–25 % less CPU (docs/reference/speed-accuracy.md); `false` is the `exact-kernel` variant.
     pub kernel_table: bool,
     /// Particle shifting after each step; default the near-wall band ([`ParticleShifting::Sun2017Walls`],
-    /// docs/decisions/wall-band-shifting.md); it must be none with `multi_fluid`
+    /// docs/decisions/wall-band-shifting.md); it must be none with two phases or more in `multi_fluid`
     /// ([`particle_shifting::WITH_PHASES`]).
     pub shifting: ParticleShifting,
     /// Free slip (the default, the thesis's for impact flows) or no slip in the viscous term (§7.1.3).
@@ -357,7 +357,7 @@ impl<const D: usize> Simulation<D> {
     pub fn new(cfg: SolverConfig<D>, fluid: Fluid<D>, boundaries: Vec<Box<dyn Boundary<D>>>) -> Self {
         // Users' settings are refused before this (case files, the 2D+t configuration); this is a caller's slip.
         assert!(
-            cfg.multi_fluid.is_none() || cfg.shifting == ParticleShifting::None,
+            cfg.multi_fluid.as_ref().is_none_or(|m| m.phases.len() < 2) || cfg.shifting == ParticleShifting::None,
             "several phases need {}",
             particle_shifting::WITH_PHASES
         );

@@ -33,11 +33,11 @@ pub struct RunArgs {
     /// Landrini 2003; corners keep fixed ghosts). Default: the case's (fixed unless it says otherwise).
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
-    /// Particle shifting after each step, overriding the case file: `none` (the thesis's δ-SPH, the default)
-    /// or `sun2017` (the δ⁺-SPH shifting of Sun et al. 2017, which removes the fixed ghosts' over-pressure at
-    /// stagnation points and corners) or `sun2017-walls` (the same shift only within two kernel supports of a
-    /// wall and away from the free surface, where that over-pressure comes from; docs/reference/method.md,
-    /// "Particle shifting").
+    /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the default of a
+    /// single-phase case: the δ⁺-SPH shift of Sun et al. 2017 only within two kernel supports of the fixed wall
+    /// ghosts and away from the free surface, which removes the ghosts' over-pressure at stagnation points and
+    /// corners where it comes from), `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the
+    /// default, and the only choice, with several phases; docs/reference/method.md, "Particle shifting").
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
     /// A physical kinematic viscosity ν in m²/s (eq. 5.3) in place of the case's viscosity; e.g. the dam break
