@@ -38,7 +38,7 @@ pub enum ParticleShifting {
     None,
     /// Sun et al. (2017), δ⁺-SPH.
     Sun2017,
-    /// The same shift, applied only to the particles within two kernel supports of a wall ghost (those the
+    /// The same shift, applied only to the particles within two kernel supports of a fixed wall ghost (those the
     /// ghosts' MLS values read) and not within a support of the free surface: the remedy where the defect is
     /// (the void that opens over the fixed ghosts under a stagnation point), the rest of the water, the free
     /// surface and a wall's contact line left Lagrangian (ours; issue #35). The default of a single-phase
