@@ -82,23 +82,20 @@ impl StudyArgs {
             out.display()
         );
         print!("{}", std::fs::read_to_string(out.join("report.md")).unwrap_or_default());
+        if not_started > 0 {
+            eprintln!(
+                "{not_started} case(s) not started: the wall-time limit had passed; run the same command again to \
+                 go on"
+            );
+        }
         Ok(match halted_cases.first() {
             Some(first) => {
                 for h in &halted_cases[1..] {
                     eprintln!("{h}");
                 }
-                if not_started > 0 {
-                    eprintln!("{not_started} case(s) not started: the wall-time limit had passed");
-                }
                 crate::options::halted(first)
             }
-            None if not_started > 0 => {
-                eprintln!(
-                    "{not_started} case(s) not started: the wall-time limit had passed; run the same command \
-                     again to go on"
-                );
-                std::process::ExitCode::from(3)
-            }
+            None if not_started > 0 => std::process::ExitCode::from(3),
             None => std::process::ExitCode::SUCCESS,
         })
     }
