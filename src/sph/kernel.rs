@@ -161,11 +161,47 @@ impl<const D: usize> Kernel<D> {
         }
         rij * (self.dw_dr(r) / r)
     }
+
+    /// ([`Kernel::w`], [`Kernel::grad`]) to the bit, the Gaussian's exponential taken once.
+    #[inline]
+    pub fn w_and_grad(&self, rij: &SVector<f64, D>, r: f64) -> (f64, SVector<f64, D>) {
+        match self.kind {
+            KernelKind::RenormalizedGaussian if r < self.support => {
+                let e = (-(r * r) * self.inv_h2).exp();
+                let grad = if r <= 1e-14 * self.h {
+                    SVector::zeros()
+                } else {
+                    rij * (-2.0 * r * self.inv_h2 * self.norm * e / r)
+                };
+                (self.norm * (e - self.shift), grad)
+            }
+            _ => (self.w(r), self.grad(rij, r)),
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn w_and_grad_are_w_and_grad_to_the_bit() {
+        for kind in [KernelKind::RenormalizedGaussian, KernelKind::WendlandC2] {
+            let k = Kernel::<2>::new(kind, 0.013);
+            for n in 0..=400 {
+                let r = k.support * 1.1 * n as f64 / 400.0;
+                let rij = SVector::<f64, 2>::new(-0.6 * r, 0.8 * r);
+                let r = rij.norm();
+                let (w, g) = k.w_and_grad(&rij, r);
+                assert_eq!(w.to_bits(), k.w(r).to_bits(), "{kind:?} W at r = {r}");
+                let g0 = k.grad(&rij, r);
+                assert!(
+                    (0..2).all(|d| g[d].to_bits() == g0[d].to_bits()),
+                    "{kind:?} grad at r = {r}"
+                );
+            }
+        }
+    }
 
     fn integrate_2d(k: &Kernel<2>, dx: f64) -> f64 {
         let n = (k.support / dx).ceil() as i64 + 1;

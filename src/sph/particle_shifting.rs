@@ -141,11 +141,12 @@ pub struct ShiftStep {
 }
 
 /// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
-/// that takes no part), for a step of U_max Δt = `u_max_dt`. A first pass over the neighbours gathers the
-/// shift's sum and the matrix and vector of §7.2 (λ and the normal, as [`super::free_surface::detect`]
-/// computes them; its scan-region test is not needed, since every particle it would decide, λ in (0.2, 0.75],
-/// is projected on its tangent anyway); a second finds the particles within a kernel support of a surface
-/// particle (λ ≤ [`LAMBDA_SURFACE`]).
+/// that takes no part), for a step of U_max Δt = `u_max_dt`. Everywhere ([`ShiftStep::band_ghosts`] `None`):
+/// a first pass over the neighbours gathers the shift's sum and the matrix and vector of §7.2 (λ and the normal,
+/// as [`super::free_surface::detect`] computes them; its scan-region test is not needed, since every particle it
+/// would decide, λ in (0.2, 0.75], is projected on its tangent anyway); a second finds the particles within a
+/// kernel support of a surface particle (λ ≤ [`LAMBDA_SURFACE`]). In a band, the same sums and tests, only
+/// for the particles the band needs (its rows along the walls).
 pub fn displacements<const D: usize>(
     kernel: &Kernel<D>,
     cells: &CellList<D>,
@@ -154,62 +155,135 @@ pub fn displacements<const D: usize>(
     n_fluid: usize,
     step: ShiftStep,
 ) -> Vec<SVector<f64, D>> {
-    let ShiftStep {
-        dx,
-        u_max_dt,
-        band_ghosts,
-    } = step;
-    let walls_only = band_ghosts.is_some();
-    let band_ghosts = band_ghosts.unwrap_or(0..0);
-    let w_dx = kernel.w(dx);
-    let coef = A * kernel.h * u_max_dt;
-    let sums: Vec<(SVector<f64, D>, f64, SVector<f64, D>, bool)> = (0..n_fluid)
-        .into_par_iter()
-        .map(|i| {
-            let mut surface = SurfaceSums::<D>::new();
-            let mut sum = SVector::<f64, D>::zeros();
-            let mut near_wall = false;
-            cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
-                if j == i || volume[j] == 0.0 {
-                    return;
-                }
-                near_wall |= band_ghosts.contains(&j);
-                let gw = kernel.grad(&rij, r);
-                surface.add(&gw, &rij, volume[j]);
-                let f = 1.0 + R * (kernel.w(r) / w_dx).powi(N);
-                sum += gw * (f * volume[j]);
-            });
-            let (lambda, normal) = surface.lambda_and_normal();
-            (sum, lambda, normal, near_wall)
-        })
-        .collect();
+    let coef = A * kernel.h * step.u_max_dt;
+    let w_dx = kernel.w(step.dx);
+    let sums_of = |i: usize| particle_sums(kernel, cells, pos, volume, i, w_dx);
+    if let Some(ghosts) = step.band_ghosts {
+        // The fixed ghosts that take part (a fit, volume > 0).
+        let fixed = (0..pos.len())
+            .map(|j| ghosts.contains(&j) && volume[j] != 0.0)
+            .collect::<Vec<_>>();
+        return band_displacements(kernel, cells, pos, n_fluid, &fixed, sums_of, |sums| {
+            shift_from_sum(&sums.0, coef, sums.1, false, &sums.2, step.dx)
+        });
+    }
+    let sums: Vec<_> = (0..n_fluid).into_par_iter().map(sums_of).collect();
     let on_surface = |j: usize| j < n_fluid && sums[j].1 <= LAMBDA_SURFACE;
     (0..n_fluid)
         .into_par_iter()
         .map(|i| {
-            let (sum, lambda, normal, near_wall) = &sums[i];
-            // One scan for both: within a support of a surface particle, and (for the band) within two
-            // supports of a wall, i.e. the particles the ghosts' MLS values read (a ghost's mirror point lies
-            // within a support of the wall, and its fit within a support of that).
+            let (sum, lambda, normal) = &sums[i];
             let mut near_surface = on_surface(i);
-            let mut within_two = *near_wall;
-            if !near_surface || (walls_only && !within_two) {
-                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
-                    near_surface |= on_surface(j);
-                    within_two |= j < n_fluid && sums[j].3;
-                });
+            if !near_surface {
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
             }
-            if walls_only && !within_two {
-                return SVector::zeros();
-            }
-            if walls_only && near_surface {
-                // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
-                // contact line (ours: the sloshing gauges at the walls read −7 % / +5 % with it).
-                return SVector::zeros();
-            }
-            shift_from_sum(sum, coef, *lambda, near_surface, normal, dx)
+            shift_from_sum(sum, coef, *lambda, near_surface, normal, step.dx)
         })
         .collect()
+}
+
+/// One particle's sums: (S, λ, normal).
+type Sums<const D: usize> = (SVector<f64, D>, f64, SVector<f64, D>);
+
+/// [`ParticleShifting::Sun2017Walls`]: the shift `shift` gives a particle from its sums (`sums_of`) in the band
+/// of the fixed ghosts marked in `fixed` (within two kernel supports of one) away from the free
+/// surface (no surface particle, λ ≤ [`LAMBDA_SURFACE`], within a support), zero elsewhere. Three scatters
+/// ([`fluid_within_a_support`]) find the band and the particles whose λ its surface test reads, and the sums
+/// are taken for those alone: the band is a few rows along the walls, and the rest of the water costs nothing.
+fn band_displacements<const D: usize>(
+    kernel: &Kernel<D>,
+    cells: &CellList<D>,
+    pos: &[SVector<f64, D>],
+    n_fluid: usize,
+    fixed: &[bool],
+    sums_of: impl Fn(usize) -> Sums<D> + Sync,
+    shift: impl Fn(&Sums<D>) -> SVector<f64, D> + Sync,
+) -> Vec<SVector<f64, D>> {
+    let near = |from: &[bool]| fluid_within_a_support(cells, pos, n_fluid, kernel.support, from);
+    // The fluid within a support of the ghosts (the water their MLS fits read); within two supports (the band);
+    // within a support of the band (whose λ the surface test reads).
+    let band = near(&near(fixed));
+    let read = near(&band);
+    let sums: Vec<_> = (0..n_fluid)
+        .into_par_iter()
+        .map(|i| read[i].then(|| sums_of(i)))
+        .collect();
+    let on_surface = |j: usize| j < n_fluid && sums[j].as_ref().is_some_and(|s| s.1 <= LAMBDA_SURFACE);
+    (0..n_fluid)
+        .into_par_iter()
+        .map(|i| {
+            let Some(own) = sums[i].as_ref().filter(|_| band[i]) else {
+                return SVector::zeros();
+            };
+            // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
+            // contact line (ours: the sloshing gauges at the walls read −7 % / +5 % with it).
+            let mut near_surface = on_surface(i);
+            if !near_surface {
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
+            }
+            if near_surface {
+                return SVector::zeros();
+            }
+            shift(own)
+        })
+        .collect()
+}
+
+/// One particle's sums: the shift's S = Σ_j [1 + R (W_ij/W(Δx))^n] ∇_i W_ij V_j, and λ and the normal of
+/// §7.2 from the same neighbours (`w_dx` = W(Δx)).
+fn particle_sums<const D: usize>(
+    kernel: &Kernel<D>,
+    cells: &CellList<D>,
+    pos: &[SVector<f64, D>],
+    volume: &[f64],
+    i: usize,
+    w_dx: f64,
+) -> Sums<D> {
+    let mut surface = SurfaceSums::<D>::new();
+    let mut sum = SVector::<f64, D>::zeros();
+    cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
+        if j == i || volume[j] == 0.0 {
+            return;
+        }
+        let (w, gw) = kernel.w_and_grad(&rij, r);
+        surface.add(&gw, &rij, volume[j]);
+        let f = 1.0 + R * (w / w_dx).powi(N);
+        sum += gw * (f * volume[j]);
+    });
+    let (lambda, normal) = surface.lambda_and_normal();
+    (sum, lambda, normal)
+}
+
+/// The fluid particles (the first `n_fluid` of `pos`) within a kernel support (`support`) of a particle marked
+/// in `from` (itself included). A scatter from the marked ones, which are few (a band along the walls), into a
+/// set: the same set for any thread count.
+fn fluid_within_a_support<const D: usize>(
+    cells: &CellList<D>,
+    pos: &[SVector<f64, D>],
+    n_fluid: usize,
+    support: f64,
+    from: &[bool],
+) -> Vec<bool> {
+    let found: Vec<u32> = (0..from.len())
+        .into_par_iter()
+        .filter(|&k| from[k])
+        .fold(Vec::new, |mut near, k| {
+            cells.for_each_within_r2(pos, &pos[k], support, |j, _, _| {
+                if j < n_fluid {
+                    near.push(j as u32);
+                }
+            });
+            near
+        })
+        .reduce(Vec::new, |mut a, b| {
+            a.extend(b);
+            a
+        });
+    let mut marked = vec![false; n_fluid];
+    for j in found {
+        marked[j as usize] = true;
+    }
+    marked
 }
 
 #[cfg(test)]
@@ -313,6 +387,102 @@ mod tests {
         assert!(
             moved > 0 && still > 0 && surface > 0,
             "the case must shift near the floor ({moved}), away from it ({still}) and at the surface ({surface})"
+        );
+    }
+
+    /// The slow oracle of the band's scatter: every particle's sums, and each particle's own scan for a fixed
+    /// ghost within a support, for a marked particle within a support and for a surface particle within one.
+    fn band_by_gather(
+        kernel: &Kernel<2>,
+        cells: &CellList<2>,
+        pos: &[Vector2<f64>],
+        volume: &[f64],
+        n_fluid: usize,
+        step: &ShiftStep,
+    ) -> Vec<Vector2<f64>> {
+        let ghosts = step.band_ghosts.clone().unwrap();
+        let (coef, w_dx) = (A * kernel.h * step.u_max_dt, kernel.w(step.dx));
+        let sums: Vec<_> = (0..n_fluid)
+            .map(|i| particle_sums(kernel, cells, pos, volume, i, w_dx))
+            .collect();
+        let near_wall: Vec<bool> = (0..n_fluid)
+            .map(|i| {
+                let mut near = false;
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
+                    near |= ghosts.contains(&j) && volume[j] != 0.0
+                });
+                near
+            })
+            .collect();
+        (0..n_fluid)
+            .map(|i| {
+                let (mut in_band, mut near_surface) = (false, false);
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
+                    if j < n_fluid {
+                        in_band |= near_wall[j];
+                        near_surface |= sums[j].1 <= LAMBDA_SURFACE;
+                    }
+                });
+                if !in_band || near_surface {
+                    return Vector2::zeros();
+                }
+                shift_from_sum(&sums[i].0, coef, sums[i].1, false, &sums[i].2, step.dx)
+            })
+            .collect()
+    }
+
+    /// The band's fast path (a scatter from the ghosts, then from the marked particles, and the sums only where
+    /// they are read) gives the oracle's shifts to the bit, in a corner of fixed ghosts with a sloping free
+    /// surface, ghosts that take no part, image ghosts beside them and a splash.
+    #[test]
+    fn band_scatter_gives_the_gather_oracles_shifts_to_the_bit() {
+        let dx = 0.1;
+        let kernel = Kernel::<2>::new(KernelKind::RenormalizedGaussian, 1.33 * dx);
+        let mut pos = vec![];
+        for j in 0..30 {
+            for i in 0..40 {
+                let wobble = 0.08 * dx * (((7 * i + 13 * j) % 11) as f64 / 11.0 - 0.5);
+                let (x, y) = ((i as f64 + 0.5) * dx + wobble, (j as f64 + 0.5) * dx - 0.5 * wobble);
+                // A free surface sloping down from the wall x = 0.
+                if y < 3.0 - 0.04 * x * x {
+                    pos.push(Vector2::new(x, y));
+                }
+            }
+        }
+        pos.push(Vector2::new(2.0, 3.6)); // a splash
+        let n_fluid = pos.len();
+        // Fixed ghosts: four rows under the floor and four columns behind the wall x = 0.
+        for k in 0..4 {
+            for i in -4..40 {
+                pos.push(Vector2::new((i as f64 + 0.5) * dx, -(k as f64 + 0.5) * dx));
+            }
+            for j in 0..32 {
+                pos.push(Vector2::new(-(k as f64 + 0.5) * dx, (j as f64 + 0.5) * dx));
+            }
+        }
+        let n_fixed = pos.len() - n_fluid;
+        // Image ghosts behind a wall x = 4 (not in the band's range).
+        for j in 0..30 {
+            pos.push(Vector2::new(4.05, (j as f64 + 0.5) * dx));
+        }
+        let mut volume = vec![dx * dx; pos.len()];
+        // Some fixed ghosts take no part (no fluid for their fit).
+        for v in volume[n_fluid..n_fluid + 20].iter_mut() {
+            *v = 0.0;
+        }
+        let cells = CellList::build(&pos, kernel.support);
+        let step = ShiftStep {
+            dx,
+            u_max_dt: 0.01 * dx,
+            band_ghosts: Some(n_fluid..n_fluid + n_fixed),
+        };
+        let fast = displacements(&kernel, &cells, &pos, &volume, n_fluid, step.clone());
+        let slow = band_by_gather(&kernel, &cells, &pos, &volume, n_fluid, &step);
+        assert_eq!(fast, slow);
+        let moved = fast.iter().filter(|d| **d != Vector2::zeros()).count();
+        assert!(
+            moved > 50 && moved < n_fluid / 2,
+            "the band must move some and not most: {moved} of {n_fluid}"
         );
     }
 }

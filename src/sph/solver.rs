@@ -941,6 +941,10 @@ impl<const D: usize> Simulation<D> {
             .zip(self.fluid.mass.par_iter())
             .zip(&d)
             .map(|(((x, u), m), d)| {
+                if *d == SVector::<f64, D>::zeros() {
+                    // Not moved: the step's own safeguard has kept it out of the walls at this time.
+                    return (0, 0.0);
+                }
                 let phi0 = body.potential(x);
                 *x += d;
                 let n = boundaries.iter().filter(|b| b.keep_out(t, x, u)).count();
