@@ -256,7 +256,7 @@ fn particle_sums<const D: usize>(
 
 /// The fluid particles (the first `n_fluid` of `pos`) within a kernel support (`support`) of a particle marked
 /// in `from` (itself included). A scatter from the marked ones, which are few (a band along the walls), into a
-/// set: the same set for any thread count.
+/// set of flags that are only ever set: the same set for any thread count and order, one byte per particle.
 fn fluid_within_a_support<const D: usize>(
     cells: &CellList<D>,
     pos: &[SVector<f64, D>],
@@ -264,26 +264,16 @@ fn fluid_within_a_support<const D: usize>(
     support: f64,
     from: &[bool],
 ) -> Vec<bool> {
-    let found: Vec<u32> = (0..from.len())
-        .into_par_iter()
-        .filter(|&k| from[k])
-        .fold(Vec::new, |mut near, k| {
-            cells.for_each_within_r2(pos, &pos[k], support, |j, _, _| {
-                if j < n_fluid {
-                    near.push(j as u32);
-                }
-            });
-            near
-        })
-        .reduce(Vec::new, |mut a, b| {
-            a.extend(b);
-            a
+    use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+    let marked: Vec<AtomicBool> = (0..n_fluid).map(|_| AtomicBool::new(false)).collect();
+    (0..from.len()).into_par_iter().filter(|&k| from[k]).for_each(|k| {
+        cells.for_each_within_r2(pos, &pos[k], support, |j, _, _| {
+            if j < n_fluid {
+                marked[j].store(true, Relaxed);
+            }
         });
-    let mut marked = vec![false; n_fluid];
-    for j in found {
-        marked[j as usize] = true;
-    }
-    marked
+    });
+    marked.into_iter().map(AtomicBool::into_inner).collect()
 }
 
 #[cfg(test)]
