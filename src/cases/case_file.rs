@@ -202,8 +202,9 @@ pub struct Numerics {
     /// exact kernel on the dam break and the 2D+t chart for 10–25 % less CPU (docs/reference/speed-accuracy.md).
     #[serde(default = "default_kernel_table")]
     pub kernel_table: bool,
-    /// "sun2017-walls", "sun2017" or "none": particle shifting after each step only within two kernel supports
-    /// of a wall and away from the free surface, everywhere, or not at all (the thesis's δ-SPH)
+    /// "sun2017-walls", "sun2017-leaving", "sun2017" or "none": particle shifting after each step only within two
+    /// kernel supports of a wall and away from the free surface, the same only where the flow leaves a wall,
+    /// everywhere, or not at all (the thesis's δ-SPH)
     /// (`sph::particle_shifting`). Unset: "sun2017-walls" with one phase, "none" with `[[phases]]`
     /// ([`CaseFile::shifting`], docs/decisions/wall-band-shifting.md).
     #[serde(default, skip_serializing_if = "Option::is_none")]

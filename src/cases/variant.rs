@@ -55,11 +55,12 @@ fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         "exact-kernel" => n.kernel_table = false,
         "sun2017" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017),
         "sun2017-walls" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017Walls),
+        "sun2017-leaving" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017Leaving),
         "no-shifting" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::None),
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, no-shifting, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
                 )
             })?;
             let x: f64 = v

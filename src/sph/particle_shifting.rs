@@ -45,6 +45,12 @@ pub enum ParticleShifting {
     /// scene (docs/decisions/wall-band-shifting.md).
     #[default]
     Sun2017Walls,
+    /// The band of [`ParticleShifting::Sun2017Walls`] only where the flow leaves a wall: within a kernel support
+    /// of the particles that lie within a support of a fixed ghost and move away from the ghosts there
+    /// ([`ShiftRegion::WhereTheFlowLeaves`]). The void opens where the water leaves the ghost lattice; where it
+    /// arrives (a flat wall's stagnation point) there is none, and a shift there only costs the velocity it does
+    /// not carry (ours; issue #35, studies/results/validation/LOG.md, session 49).
+    Sun2017Leaving,
 }
 
 /// The default shifting of a scene: [`ParticleShifting::Sun2017Walls`] with one phase, none with several
@@ -64,7 +70,10 @@ impl std::str::FromStr for ParticleShifting {
             "none" => Ok(Self::None),
             "sun2017" => Ok(Self::Sun2017),
             "sun2017-walls" => Ok(Self::Sun2017Walls),
-            v => Err(format!("expected `none`, `sun2017` or `sun2017-walls`, got `{v}`")),
+            "sun2017-leaving" => Ok(Self::Sun2017Leaving),
+            v => Err(format!(
+                "expected `none`, `sun2017`, `sun2017-walls` or `sun2017-leaving`, got `{v}`"
+            )),
         }
     }
 }
@@ -75,6 +84,7 @@ impl std::fmt::Display for ParticleShifting {
             Self::None => "none",
             Self::Sun2017 => "sun2017",
             Self::Sun2017Walls => "sun2017-walls",
+            Self::Sun2017Leaving => "sun2017-leaving",
         })
     }
 }
@@ -126,22 +136,40 @@ pub fn shift_from_sum<const D: usize>(
     d
 }
 
+/// Where a step's shift applies.
+#[derive(Clone, Debug)]
+pub enum ShiftRegion<const D: usize> {
+    /// Everywhere ([`ParticleShifting::Sun2017`]).
+    Everywhere,
+    /// [`ParticleShifting::Sun2017Walls`]: within two kernel supports of these ghosts (their indices in `pos`:
+    /// the fixed ghosts, whose lattice the void opens over) and away from the free surface. Image ghosts mirror
+    /// the fluid and leave no void: a band around them only disturbs the flow they mirror (the `jet-wall`
+    /// corner with image ghosts at b/dx 10 reads Cp 1.042 with it, 0.994 without).
+    NearWalls { ghosts: std::ops::Range<usize> },
+    /// [`ParticleShifting::Sun2017Leaving`]: within a kernel support of a fluid particle i that lies within a
+    /// support of these ghosts and moves away from them, Σ_g (u_i − u_g) · (r_i − r_g) W_ig > 0 over the ghosts
+    /// g within its support (the ghosts' part of −∇·u at i: they spread its neighbourhood), and away from the
+    /// free surface. `vel`: the velocities of all of `pos` (a ghost's that of its wall condition, so that with
+    /// free slip the sum reads the normal velocity relative to the wall).
+    WhereTheFlowLeaves {
+        ghosts: std::ops::Range<usize>,
+        vel: Vec<SVector<f64, D>>,
+    },
+}
+
 /// What one step's shift depends on besides the particles.
 #[derive(Clone, Debug)]
-pub struct ShiftStep {
+pub struct ShiftStep<const D: usize> {
     /// The particle spacing Δx (m): W(Δx) of the anti-clumping term, and the cap [`CAP`] Δx.
     pub dx: f64,
     /// U_max Δt (m): the largest fluid speed times the step.
     pub u_max_dt: f64,
-    /// [`ParticleShifting::Sun2017Walls`]: shift only within two kernel supports of these ghosts (their indices
-    /// in `pos`: the fixed ghosts, whose lattice the void opens over) and away from the free surface. Image
-    /// ghosts mirror the fluid and leave no void: a band around them only disturbs the flow they mirror (the
-    /// `jet-wall` corner with image ghosts at b/dx 10 reads Cp 1.042 with it, 0.994 without). `None`: everywhere.
-    pub band_ghosts: Option<std::ops::Range<usize>>,
+    /// Where it applies.
+    pub region: ShiftRegion<D>,
 }
 
 /// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
-/// that takes no part), for a step of U_max Δt = `u_max_dt`. Everywhere ([`ShiftStep::band_ghosts`] `None`):
+/// that takes no part), for a step of U_max Δt = `u_max_dt`. Everywhere ([`ShiftRegion::Everywhere`]):
 /// a first pass over the neighbours gathers the shift's sum and the matrix and vector of §7.2 (λ and the normal,
 /// as [`super::free_surface::detect`] computes them; its scan-region test is not needed, since every particle it
 /// would decide, λ in (0.2, 0.75], is projected on its tangent anyway); a second finds the particles within a
@@ -153,17 +181,34 @@ pub fn displacements<const D: usize>(
     pos: &[SVector<f64, D>],
     volume: &[f64],
     n_fluid: usize,
-    step: ShiftStep,
+    step: ShiftStep<D>,
 ) -> Vec<SVector<f64, D>> {
     let coef = A * kernel.h * step.u_max_dt;
     let w_dx = kernel.w(step.dx);
     let sums_of = |i: usize| particle_sums(kernel, cells, pos, volume, i, w_dx);
-    if let Some(ghosts) = step.band_ghosts {
-        // The fixed ghosts that take part (a fit, volume > 0).
-        let fixed = (0..pos.len())
+    let near = |from: &[bool]| fluid_within_a_support(cells, pos, n_fluid, kernel.support, from);
+    // The fixed ghosts that take part (a fit, volume > 0).
+    let fixed = |ghosts: std::ops::Range<usize>| {
+        (0..pos.len())
             .map(|j| ghosts.contains(&j) && volume[j] != 0.0)
-            .collect::<Vec<_>>();
-        return band_displacements(kernel, cells, pos, n_fluid, &fixed, sums_of, |sums| {
+            .collect::<Vec<_>>()
+    };
+    // The fluid within a support of the ghosts is the water their MLS fits read.
+    let band = match step.region {
+        ShiftRegion::Everywhere => None,
+        ShiftRegion::NearWalls { ghosts } => Some(near(&near(&fixed(ghosts)))),
+        ShiftRegion::WhereTheFlowLeaves { ghosts, vel } => {
+            let fixed = fixed(ghosts);
+            let read = near(&fixed);
+            let leaving: Vec<bool> = (0..n_fluid)
+                .into_par_iter()
+                .map(|i| read[i] && moves_away(kernel, cells, pos, &vel, &fixed, i))
+                .collect();
+            Some(near(&leaving))
+        }
+    };
+    if let Some(band) = band {
+        return band_displacements(kernel, cells, pos, n_fluid, &band, sums_of, |sums| {
             shift_from_sum(&sums.0, coef, sums.1, false, &sums.2, step.dx)
         });
     }
@@ -182,28 +227,42 @@ pub fn displacements<const D: usize>(
         .collect()
 }
 
+/// Whether fluid particle i moves away from the ghosts marked in `fixed` within a support of it:
+/// Σ_g (u_i − u_g) · (r_i − r_g) W_ig > 0 ([`ShiftRegion::WhereTheFlowLeaves`]).
+fn moves_away<const D: usize>(
+    kernel: &Kernel<D>,
+    cells: &CellList<D>,
+    pos: &[SVector<f64, D>],
+    vel: &[SVector<f64, D>],
+    fixed: &[bool],
+    i: usize,
+) -> bool {
+    let mut separation = 0.0;
+    cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
+        if fixed[j] {
+            separation += (vel[i] - vel[j]).dot(&rij) * kernel.w(r);
+        }
+    });
+    separation > 0.0
+}
+
 /// One particle's sums: (S, λ, normal).
 type Sums<const D: usize> = (SVector<f64, D>, f64, SVector<f64, D>);
 
-/// [`ParticleShifting::Sun2017Walls`]: the shift `shift` gives a particle from its sums (`sums_of`) in the band
-/// of the fixed ghosts marked in `fixed` (within two kernel supports of one) away from the free
-/// surface (no surface particle, λ ≤ [`LAMBDA_SURFACE`], within a support), zero elsewhere. Three scatters
-/// ([`fluid_within_a_support`]) find the band and the particles whose λ its surface test reads, and the sums
-/// are taken for those alone: the band is a few rows along the walls, and the rest of the water costs nothing.
+/// A band's shifts: the shift `shift` gives a particle from its sums (`sums_of`) where `band` marks it and no
+/// free-surface particle (λ ≤ [`LAMBDA_SURFACE`]) lies within a support of it, zero elsewhere. A scatter
+/// ([`fluid_within_a_support`]) finds the particles whose λ the surface test reads, and the sums are taken for
+/// those alone: a band is a few rows along the walls, and the rest of the water costs nothing.
 fn band_displacements<const D: usize>(
     kernel: &Kernel<D>,
     cells: &CellList<D>,
     pos: &[SVector<f64, D>],
     n_fluid: usize,
-    fixed: &[bool],
+    band: &[bool],
     sums_of: impl Fn(usize) -> Sums<D> + Sync,
     shift: impl Fn(&Sums<D>) -> SVector<f64, D> + Sync,
 ) -> Vec<SVector<f64, D>> {
-    let near = |from: &[bool]| fluid_within_a_support(cells, pos, n_fluid, kernel.support, from);
-    // The fluid within a support of the ghosts (the water their MLS fits read); within two supports (the band);
-    // within a support of the band (whose λ the surface test reads).
-    let band = near(&near(fixed));
-    let read = near(&band);
+    let read = fluid_within_a_support(cells, pos, n_fluid, kernel.support, band);
     let sums: Vec<_> = (0..n_fluid)
         .into_par_iter()
         .map(|i| read[i].then(|| sums_of(i)))
@@ -328,15 +387,16 @@ mod tests {
         }
         let volume = vec![dx * dx; pos.len()];
         let cells = CellList::build(&pos, kernel.support);
-        let step = |band_ghosts| ShiftStep {
+        let step = |region| ShiftStep {
             dx,
             u_max_dt: 0.01 * dx,
-            band_ghosts,
+            region,
         };
-        let full = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(None));
-        let band = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(Some(n_fluid..pos.len())));
+        let full = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(ShiftRegion::Everywhere));
+        let near = |ghosts| step(ShiftRegion::NearWalls { ghosts });
+        let band = displacements(&kernel, &cells, &pos, &volume, n_fluid, near(n_fluid..pos.len()));
         // The same floor of image ghosts (no fixed ghost): no band, nothing moves.
-        let images = displacements(&kernel, &cells, &pos, &volume, n_fluid, step(Some(n_fluid..n_fluid)));
+        let images = displacements(&kernel, &cells, &pos, &volume, n_fluid, near(n_fluid..n_fluid));
         assert!(
             images.iter().all(|d| *d == Vector2::zeros()),
             "a band around image ghosts"
@@ -380,28 +440,38 @@ mod tests {
         );
     }
 
-    /// The slow oracle of the band's scatter: every particle's sums, and each particle's own scan for a fixed
-    /// ghost within a support, for a marked particle within a support and for a surface particle within one.
+    /// The slow oracle of the bands' scatters: every particle's sums, and each particle's own scans: for a fixed
+    /// ghost within a support (and, where the flow must leave, its separation from them), then for such a
+    /// particle within a support and for a surface particle within one.
     fn band_by_gather(
         kernel: &Kernel<2>,
         cells: &CellList<2>,
         pos: &[Vector2<f64>],
         volume: &[f64],
         n_fluid: usize,
-        step: &ShiftStep,
+        step: &ShiftStep<2>,
     ) -> Vec<Vector2<f64>> {
-        let ghosts = step.band_ghosts.clone().unwrap();
+        let (ghosts, vel) = match &step.region {
+            ShiftRegion::NearWalls { ghosts } => (ghosts.clone(), None),
+            ShiftRegion::WhereTheFlowLeaves { ghosts, vel } => (ghosts.clone(), Some(vel)),
+            ShiftRegion::Everywhere => unreachable!(),
+        };
         let (coef, w_dx) = (A * kernel.h * step.u_max_dt, kernel.w(step.dx));
         let sums: Vec<_> = (0..n_fluid)
             .map(|i| particle_sums(kernel, cells, pos, volume, i, w_dx))
             .collect();
-        let near_wall: Vec<bool> = (0..n_fluid)
+        let seed: Vec<bool> = (0..n_fluid)
             .map(|i| {
-                let mut near = false;
-                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
-                    near |= ghosts.contains(&j) && volume[j] != 0.0
+                let (mut near, mut separation) = (false, 0.0);
+                cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
+                    if ghosts.contains(&j) && volume[j] != 0.0 {
+                        near = true;
+                        if let Some(u) = vel {
+                            separation += (u[i] - u[j]).dot(&rij) * kernel.w(r);
+                        }
+                    }
                 });
-                near
+                near && (vel.is_none() || separation > 0.0)
             })
             .collect();
         (0..n_fluid)
@@ -409,7 +479,7 @@ mod tests {
                 let (mut in_band, mut near_surface) = (false, false);
                 cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| {
                     if j < n_fluid {
-                        in_band |= near_wall[j];
+                        in_band |= seed[j];
                         near_surface |= sums[j].1 <= LAMBDA_SURFACE;
                     }
                 });
@@ -421,9 +491,10 @@ mod tests {
             .collect()
     }
 
-    /// The band's fast path (a scatter from the ghosts, then from the marked particles, and the sums only where
+    /// The bands' fast path (scatters from the ghosts, then from the marked particles, and the sums only where
     /// they are read) gives the oracle's shifts to the bit, in a corner of fixed ghosts with a sloping free
-    /// surface, ghosts that take no part, image ghosts beside them and a splash.
+    /// surface, ghosts that take no part, image ghosts beside them and a splash; where the flow must leave the
+    /// walls, in a flow that leaves the floor on one side and falls onto it on the other.
     #[test]
     fn band_scatter_gives_the_gather_oracles_shifts_to_the_bit() {
         let dx = 0.1;
@@ -460,19 +531,90 @@ mod tests {
         for v in volume[n_fluid..n_fluid + 20].iter_mut() {
             *v = 0.0;
         }
+        // Rising for x < 2, falling beyond; the ghosts hold the mirrored vertical velocity.
+        let vel: Vec<Vector2<f64>> = pos
+            .iter()
+            .enumerate()
+            .map(|(k, p)| {
+                let v = Vector2::new(0.1 * p.y, (2.0 - p.x).tanh());
+                if k < n_fluid {
+                    v
+                } else {
+                    Vector2::new(v.x, -v.y)
+                }
+            })
+            .collect();
         let cells = CellList::build(&pos, kernel.support);
-        let step = ShiftStep {
+        let ghosts = n_fluid..n_fluid + n_fixed;
+        let mut moved = vec![];
+        for region in [
+            ShiftRegion::NearWalls { ghosts: ghosts.clone() },
+            ShiftRegion::WhereTheFlowLeaves { ghosts, vel },
+        ] {
+            let step = ShiftStep {
+                dx,
+                u_max_dt: 0.01 * dx,
+                region,
+            };
+            let fast = displacements(&kernel, &cells, &pos, &volume, n_fluid, step.clone());
+            let slow = band_by_gather(&kernel, &cells, &pos, &volume, n_fluid, &step);
+            assert_eq!(fast, slow, "{:?}", std::mem::discriminant(&step.region));
+            moved.push(fast.iter().filter(|d| **d != Vector2::zeros()).count());
+        }
+        assert!(
+            moved[0] > 50 && moved[0] < n_fluid / 2,
+            "the band must move some and not most: {} of {n_fluid}",
+            moved[0]
+        );
+        assert!(
+            moved[1] > 10 && moved[1] < moved[0] * 3 / 4,
+            "where the flow leaves, fewer: {moved:?}"
+        );
+    }
+
+    /// Where the flow leaves: water rising off a floor (its ghosts holding the mirrored velocity) is shifted as
+    /// the band near the walls shifts it; water falling onto the floor is not shifted at all.
+    #[test]
+    fn where_the_flow_leaves_a_rising_block_is_the_wall_band_and_a_falling_one_does_not_move() {
+        let dx = 0.1;
+        let kernel = Kernel::<2>::new(KernelKind::RenormalizedGaussian, 1.33 * dx);
+        let mut pos = vec![];
+        for j in 0..20 {
+            for i in 0..30 {
+                let wobble = 0.05 * dx * (((7 * i + 13 * j) % 11) as f64 / 11.0 - 0.5);
+                pos.push(Vector2::new(
+                    (i as f64 + 0.5) * dx + wobble,
+                    (j as f64 + 0.5) * dx - wobble,
+                ));
+            }
+        }
+        let n_fluid = pos.len();
+        for k in 0..4 {
+            for i in 0..30 {
+                pos.push(Vector2::new((i as f64 + 0.5) * dx, -(k as f64 + 0.5) * dx));
+            }
+        }
+        let volume = vec![dx * dx; pos.len()];
+        let cells = CellList::build(&pos, kernel.support);
+        let ghosts = n_fluid..pos.len();
+        let step = |region| ShiftStep {
             dx,
             u_max_dt: 0.01 * dx,
-            band_ghosts: Some(n_fluid..n_fluid + n_fixed),
+            region,
         };
-        let fast = displacements(&kernel, &cells, &pos, &volume, n_fluid, step.clone());
-        let slow = band_by_gather(&kernel, &cells, &pos, &volume, n_fluid, &step);
-        assert_eq!(fast, slow);
-        let moved = fast.iter().filter(|d| **d != Vector2::zeros()).count();
-        assert!(
-            moved > 50 && moved < n_fluid / 2,
-            "the band must move some and not most: {moved} of {n_fluid}"
-        );
+        let shift = |region| displacements(&kernel, &cells, &pos, &volume, n_fluid, step(region));
+        let with = |up: f64| {
+            let vel = (0..pos.len())
+                .map(|k| Vector2::new(0.0, if k < n_fluid { up } else { -up }))
+                .collect();
+            shift(ShiftRegion::WhereTheFlowLeaves {
+                ghosts: ghosts.clone(),
+                vel,
+            })
+        };
+        let band = shift(ShiftRegion::NearWalls { ghosts: ghosts.clone() });
+        assert!(band.iter().any(|d| *d != Vector2::zeros()));
+        assert_eq!(with(1.0), band, "rising off the floor");
+        assert!(with(-1.0).iter().all(|d| *d == Vector2::zeros()), "falling onto it");
     }
 }

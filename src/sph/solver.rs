@@ -32,7 +32,7 @@ use super::kernel_table::{GradientFactor, GradientTable};
 use super::mls::{mls_fit, MlsFit};
 use super::multi_fluid::{self, MultiFluid, ShepardDensity, StateDensity};
 use super::neighbours::CellList;
-use super::particle_shifting::{self, ParticleShifting};
+use super::particle_shifting::{self, ParticleShifting, ShiftRegion};
 use super::particles::Fluid;
 use super::wall_sensor::{SensorRecord, WallSensor};
 use nalgebra::SVector;
@@ -926,8 +926,7 @@ impl<const D: usize> Simulation<D> {
             particle_shifting::ShiftStep {
                 dx: self.cfg.dx,
                 u_max_dt: u_max * dt,
-                band_ghosts: (self.cfg.shifting == ParticleShifting::Sun2017Walls)
-                    .then(|| nf..nf + self.ghosts.n_fixed),
+                region: self.shift_region(),
             },
         );
         let t = self.time;
@@ -963,6 +962,20 @@ impl<const D: usize> Simulation<D> {
             .par_iter_mut()
             .enumerate()
             .for_each(|(i, r)| *r += g[i].dot(&d[i]));
+    }
+
+    /// Where the configured shifting moves particles (the fixed ghosts follow the fluid in `all_pos`).
+    fn shift_region(&self) -> ShiftRegion<D> {
+        let nf = self.fluid.len();
+        let ghosts = nf..nf + self.ghosts.n_fixed;
+        match self.cfg.shifting {
+            ParticleShifting::None | ParticleShifting::Sun2017 => ShiftRegion::Everywhere,
+            ParticleShifting::Sun2017Walls => ShiftRegion::NearWalls { ghosts },
+            ParticleShifting::Sun2017Leaving => ShiftRegion::WhereTheFlowLeaves {
+                ghosts,
+                vel: [self.fluid.vel.as_slice(), &self.ghosts.vel].concat(),
+            },
+        }
     }
 
     fn blow_up(&mut self, reason: BlowUpReason, particle: Option<usize>) -> BlowUp {

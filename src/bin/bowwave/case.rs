@@ -36,7 +36,8 @@ pub struct RunArgs {
     /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the default of a
     /// single-phase case: the δ⁺-SPH shift of Sun et al. 2017 only within two kernel supports of the fixed wall
     /// ghosts and away from the free surface, which removes the ghosts' over-pressure at stagnation points and
-    /// corners where it comes from), `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the
+    /// corners where it comes from), `sun2017-leaving` (that band only where the flow leaves a wall, not where
+    /// it arrives), `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the
     /// default, and the only choice, with several phases; docs/reference/method.md, "Particle shifting").
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
@@ -52,7 +53,7 @@ pub struct RunArgs {
     pub wall_slip: Option<WallSlip>,
     /// A method variant applied to the case before the options above, by the names of `chart speed-accuracy
     /// --variants`: delta-sph, molteni, wcsph, wendland (Wendland C2 at h = 2 dx), pc, rk4, table, exact-kernel,
-    /// images, fixed-ghosts, sun2017, sun2017-walls, no-shifting, alpha=A, delta=D, cfl=C, h=H (h/dx), joined
+    /// images, fixed-ghosts, sun2017, sun2017-walls, sun2017-leaving, no-shifting, alpha=A, delta=D, cfl=C, h=H (h/dx), joined
     /// by `+` to combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
     #[arg(long)]
     pub variant: Option<String>,

@@ -12,8 +12,9 @@ pub enum ChartKind {
         case: String,
         /// Method variants: delta-sph, molteni, wcsph, wendland, pc, rk4, table (tabulated kernel gradient, the
         /// default), exact-kernel (the Gaussian evaluated at every pair), images / fixed-ghosts (every wall's
-        /// straight sides as image ghosts, or the fixed lattice), sun2017 / sun2017-walls / no-shifting
-        /// (particle shifting everywhere, near the walls only, or off), alpha=A, delta=D, cfl=C,
+        /// straight sides as image ghosts, or the fixed lattice), sun2017 / sun2017-walls / sun2017-leaving /
+        /// no-shifting (particle shifting everywhere, near the walls only, there only where the flow leaves
+        /// them, or off), alpha=A, delta=D, cfl=C,
         /// h=H (h/dx); names joined by `+` combine, applied left to right (e.g. wendland+h=1.4).
         #[arg(long, value_delimiter = ',', default_values_t = vec!["delta-sph".to_string(), "molteni".to_string(), "wcsph".to_string(), "wendland".to_string(), "pc".to_string()])]
         variants: Vec<String>,

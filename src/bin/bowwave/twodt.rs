@@ -91,7 +91,8 @@ pub struct WedgeArgs {
     #[arg(long, default_value_t = 2.0)]
     pub depth: f64,
     /// Particle shifting after each step: sun2017-walls (the default: within two kernel supports of a wall,
-    /// away from the free surface), sun2017 (everywhere) or none (docs/reference/method.md).
+    /// away from the free surface), sun2017-leaving (that band only where the flow leaves a wall), sun2017
+    /// (everywhere) or none (docs/reference/method.md).
     #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::default())]
     pub shifting: bowwave::sph::particle_shifting::ParticleShifting,
     /// Write wedge.csv (every sample of every run) and the pressure profiles into this folder; each run saves
