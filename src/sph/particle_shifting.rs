@@ -263,29 +263,34 @@ fn band_displacements<const D: usize>(
     shift: impl Fn(&Sums<D>) -> SVector<f64, D> + Sync,
 ) -> Vec<SVector<f64, D>> {
     let read = fluid_within_a_support(cells, pos, n_fluid, kernel.support, band);
-    let sums: Vec<_> = (0..n_fluid)
-        .into_par_iter()
-        .map(|i| read[i].then(|| sums_of(i)))
-        .collect();
-    let on_surface = |j: usize| j < n_fluid && sums[j].as_ref().is_some_and(|s| s.1 <= LAMBDA_SURFACE);
-    (0..n_fluid)
+    // λ of the particles read (∞ elsewhere: not a surface particle), and the band's shifts before the surface
+    // test; 24 bytes a particle, not the sums themselves.
+    let (lambda, mut shifts): (Vec<f64>, Vec<SVector<f64, D>>) = (0..n_fluid)
         .into_par_iter()
         .map(|i| {
-            let Some(own) = sums[i].as_ref().filter(|_| band[i]) else {
-                return SVector::zeros();
-            };
-            // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
-            // contact line (ours: the sloshing gauges at the walls read −7 % / +5 % with it).
-            let mut near_surface = on_surface(i);
-            if !near_surface {
-                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
+            if !read[i] {
+                return (f64::INFINITY, SVector::zeros());
             }
-            if near_surface {
-                return SVector::zeros();
-            }
-            shift(own)
+            let own = sums_of(i);
+            (own.1, if band[i] { shift(&own) } else { SVector::zeros() })
         })
-        .collect()
+        .unzip();
+    let on_surface = |j: usize| j < n_fluid && lambda[j] <= LAMBDA_SURFACE;
+    shifts.par_iter_mut().enumerate().for_each(|(i, d)| {
+        if *d == SVector::<f64, D>::zeros() {
+            return;
+        }
+        // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
+        // contact line (ours: the sloshing gauges at the walls read −7 % / +5 % with it).
+        let mut near_surface = on_surface(i);
+        if !near_surface {
+            cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
+        }
+        if near_surface {
+            *d = SVector::zeros();
+        }
+    });
+    shifts
 }
 
 /// One particle's sums: the shift's S = Σ_j [1 + R (W_ij/W(Δx))^n] ∇_i W_ij V_j, and λ and the normal of
