@@ -15,7 +15,8 @@
 //!
 //! `sun2017-walls` ([`ParticleShifting::Sun2017Walls`], ours) applies the same shift only to the particles within
 //! two kernel supports of a wall ghost (the water the ghosts' MLS values read) that are not within a support of
-//! the free surface; everything else stays Lagrangian, as in the thesis's δ-SPH.
+//! the free surface; everything else stays Lagrangian, as in the thesis's δ-SPH. `sun2017-leaving`
+//! ([`ParticleShifting::Sun2017Leaving`], ours) draws that band only where the flow leaves the ghosts.
 //!
 //! Why it is here (issue #35): at a stagnation point that the flow leaves a wall from, the Lagrangian particles
 //! move apart along the outflow and a void opens over the fixed ghosts; the ghosts' MLS values, extrapolated
