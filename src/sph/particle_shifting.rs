@@ -365,16 +365,9 @@ mod tests {
         assert!((d.norm() - CAP).abs() < 1e-12);
     }
 
-    /// `sun2017-walls` moves only the particles within two kernel supports of a fixed wall ghost and away from
-    /// the free surface, each by exactly the shift `sun2017` gives it; the rest of the water does not move, and
-    /// nothing moves over image ghosts.
-    #[test]
-    fn wall_band_shift_is_the_full_shift_within_two_supports_of_a_wall_and_zero_beyond() {
-        let dx = 0.1;
-        let kernel = Kernel::<2>::new(KernelKind::RenormalizedGaussian, 1.33 * dx);
-        // A block of water 40 dx high over a floor of ghosts (four rows), its lattice perturbed so every sum is
-        // non-zero; volumes dx².
-        let (nx, ny) = (30, 40);
+    /// A block of water `nx` × `ny` particles over a floor of fixed ghosts (four rows), its lattice perturbed so
+    /// that every sum is non-zero: the positions, fluid first, and the number of fluid particles.
+    fn block_over_a_floor(nx: usize, ny: usize, dx: f64) -> (Vec<Vector2<f64>>, usize) {
         let mut pos = vec![];
         for j in 0..ny {
             for i in 0..nx {
@@ -386,11 +379,24 @@ mod tests {
             }
         }
         let n_fluid = pos.len();
-        for j in 0..4 {
+        for k in 0..4 {
             for i in 0..nx {
-                pos.push(Vector2::new((i as f64 + 0.5) * dx, -(j as f64 + 0.5) * dx));
+                pos.push(Vector2::new((i as f64 + 0.5) * dx, -(k as f64 + 0.5) * dx));
             }
         }
+        (pos, n_fluid)
+    }
+
+    /// `sun2017-walls` moves only the particles within two kernel supports of a fixed wall ghost and away from
+    /// the free surface, each by exactly the shift `sun2017` gives it; the rest of the water does not move, and
+    /// nothing moves over image ghosts.
+    #[test]
+    fn wall_band_shift_is_the_full_shift_within_two_supports_of_a_wall_and_zero_beyond() {
+        let dx = 0.1;
+        let kernel = Kernel::<2>::new(KernelKind::RenormalizedGaussian, 1.33 * dx);
+        // A block of water 40 dx high over a floor of ghosts; volumes dx².
+        let (nx, ny) = (30, 40);
+        let (pos, n_fluid) = block_over_a_floor(nx, ny, dx);
         let volume = vec![dx * dx; pos.len()];
         let cells = CellList::build(&pos, kernel.support);
         let step = |region| ShiftStep {
@@ -584,22 +590,7 @@ mod tests {
     fn where_the_flow_leaves_a_rising_block_is_the_wall_band_and_a_falling_one_does_not_move() {
         let dx = 0.1;
         let kernel = Kernel::<2>::new(KernelKind::RenormalizedGaussian, 1.33 * dx);
-        let mut pos = vec![];
-        for j in 0..20 {
-            for i in 0..30 {
-                let wobble = 0.05 * dx * (((7 * i + 13 * j) % 11) as f64 / 11.0 - 0.5);
-                pos.push(Vector2::new(
-                    (i as f64 + 0.5) * dx + wobble,
-                    (j as f64 + 0.5) * dx - wobble,
-                ));
-            }
-        }
-        let n_fluid = pos.len();
-        for k in 0..4 {
-            for i in 0..30 {
-                pos.push(Vector2::new((i as f64 + 0.5) * dx, -(k as f64 + 0.5) * dx));
-            }
-        }
+        let (pos, n_fluid) = block_over_a_floor(30, 20, dx);
         let volume = vec![dx * dx; pos.len()];
         let cells = CellList::build(&pos, kernel.support);
         let ghosts = n_fluid..pos.len();
