@@ -219,10 +219,7 @@ pub fn displacements<const D: usize>(
         .into_par_iter()
         .map(|i| {
             let (sum, lambda, normal) = &sums[i];
-            let mut near_surface = on_surface(i);
-            if !near_surface {
-                cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
-            }
+            let near_surface = marked_within_a_support(cells, pos, kernel.support, i, on_surface);
             shift_from_sum(sum, coef, *lambda, near_surface, normal, step.dx)
         })
         .collect()
@@ -245,6 +242,22 @@ fn moves_away<const D: usize>(
         }
     });
     separation > 0.0
+}
+
+/// Whether `marked` holds for particle i or for a particle within a kernel support (`support`) of it (the
+/// surface's vicinity, with `marked` the surface test).
+fn marked_within_a_support<const D: usize>(
+    cells: &CellList<D>,
+    pos: &[SVector<f64, D>],
+    support: f64,
+    i: usize,
+    marked: impl Fn(usize) -> bool,
+) -> bool {
+    let mut near = marked(i);
+    if !near {
+        cells.for_each_within(pos, &pos[i], support, |j, _, _| near |= marked(j));
+    }
+    near
 }
 
 /// One particle's sums: (S, λ, normal).
@@ -283,11 +296,7 @@ fn band_displacements<const D: usize>(
         }
         // The band leaves the free surface and its vicinity Lagrangian too: a shift there moves a wall's
         // contact line (ours: the sloshing gauges at the walls read −7 % / +5 % with it).
-        let mut near_surface = on_surface(i);
-        if !near_surface {
-            cells.for_each_within(pos, &pos[i], kernel.support, |j, _, _| near_surface |= on_surface(j));
-        }
-        if near_surface {
+        if marked_within_a_support(cells, pos, kernel.support, i, on_surface) {
             *d = SVector::zeros();
         }
     });
