@@ -205,7 +205,7 @@ pub struct Numerics {
     /// "sun2017-walls", "sun2017-leaving", "sun2017" or "none": particle shifting after each step only within two
     /// kernel supports of a wall and away from the free surface, the same only where the flow leaves a wall,
     /// everywhere, or not at all (the thesis's δ-SPH)
-    /// (`sph::particle_shifting`). Unset: "sun2017-walls" with one phase, "none" with `[[phases]]`
+    /// (`sph::particle_shifting`). Unset: "sun2017-leaving" with one phase, "none" with `[[phases]]`
     /// ([`CaseFile::shifting`], docs/decisions/wall-band-shifting.md).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shifting: Option<crate::sph::particle_shifting::ParticleShifting>,

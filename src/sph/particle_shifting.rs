@@ -43,24 +43,26 @@ pub enum ParticleShifting {
     /// ghosts' MLS values read) and not within a support of the free surface: the remedy where the defect is
     /// (the void that opens over the fixed ghosts under a stagnation point), the rest of the water, the free
     /// surface and a wall's contact line left Lagrangian (ours; issue #35). The default of a single-phase
-    /// scene (docs/decisions/wall-band-shifting.md).
-    #[default]
+    /// scene in sessions 48–49 (docs/decisions/wall-band-shifting.md).
     Sun2017Walls,
     /// The band of [`ParticleShifting::Sun2017Walls`] only where the flow leaves a wall: within a kernel support
     /// of the particles that lie within a support of a fixed ghost and move away from the ghosts there
     /// ([`ShiftRegion::WhereTheFlowLeaves`]). The void opens where the water leaves the ghost lattice; where it
     /// arrives (a flat wall's stagnation point) there is none, and a shift there only costs the velocity it does
-    /// not carry (ours; issue #35, studies/results/validation/LOG.md, session 49).
+    /// not carry (ours; issue #35, studies/results/validation/LOG.md, session 49). The default of a single-phase
+    /// scene: the one wall variant that reads a flat wall's stagnation point within tolerance (`jet-plate`)
+    /// and the others' corners (docs/decisions/wall-band-shifting.md).
+    #[default]
     Sun2017Leaving,
 }
 
-/// The default shifting of a scene: [`ParticleShifting::Sun2017Walls`] with one phase, none with several
+/// The default shifting of a scene: [`ParticleShifting::Sun2017Leaving`] with one phase, none with several
 /// (a case's `[[phases]]`, the 2D+t air layer: [`WITH_PHASES`]).
 pub fn default_for(several_phases: bool) -> ParticleShifting {
     if several_phases {
         ParticleShifting::None
     } else {
-        ParticleShifting::Sun2017Walls
+        ParticleShifting::Sun2017Leaving
     }
 }
 

@@ -71,7 +71,8 @@ pub struct SolverConfig<const D: usize> {
     /// always exact). Default true: the dam-break and 2D+t charts show the same error as the exact kernel for
     /// 10–25 % less CPU (docs/reference/speed-accuracy.md); `false` is the `exact-kernel` variant.
     pub kernel_table: bool,
-    /// Particle shifting after each step; default the near-wall band ([`ParticleShifting::Sun2017Walls`],
+    /// Particle shifting after each step; default the band where the flow leaves a wall
+    /// ([`ParticleShifting::Sun2017Leaving`],
     /// docs/decisions/wall-band-shifting.md); it must be none with two phases or more in `multi_fluid`
     /// ([`particle_shifting::WITH_PHASES`]).
     pub shifting: ParticleShifting,

@@ -276,7 +276,7 @@ pub struct TwoDtConfig {
     /// Particle shifting after each step: sun2017-walls (the shift of Sun et al. 2017 only within two kernel
     /// supports of a wall, away from the free surface: it removes the fixed ghosts' over-pressure where the
     /// flow leaves a wall or turns a corner, as the run-up does at the keel), sun2017-leaving (the same only
-    /// where the flow leaves a wall), sun2017 (everywhere, δ⁺-SPH) or none (the thesis's δ-SPH). Default: sun2017-walls, or none with --air (docs/reference/method.md,
+    /// where the flow leaves a wall; the default), sun2017 (everywhere, δ⁺-SPH) or none (the thesis's δ-SPH). Default: sun2017-leaving, or none with --air (docs/reference/method.md,
     /// "Particle shifting"; docs/decisions/wall-band-shifting.md).
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
@@ -605,9 +605,11 @@ mod tests {
         let old_default = format!("{:?}", ParticleShifting::None);
         let today = format!("{:?}", TwoDtConfig::default().physics().shifting);
         assert_ne!(today, old_default);
-        assert!(today.contains("Sun2017Walls"), "{today}");
+        assert!(today.contains("Sun2017Leaving"), "{today}");
+        // Nor a checkpoint of the band, the default of sessions 48–49.
+        assert_ne!(today, format!("{:?}", Some(ParticleShifting::Sun2017Walls)));
         let explicit = TwoDtConfig {
-            shifting: Some(ParticleShifting::Sun2017Walls),
+            shifting: Some(ParticleShifting::Sun2017Leaving),
             ..Default::default()
         };
         assert_eq!(explicit.physics(), TwoDtConfig::default().physics());

@@ -33,11 +33,10 @@ pub struct RunArgs {
     /// Landrini 2003; corners keep fixed ghosts). Default: the case's (fixed unless it says otherwise).
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
-    /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the default of a
-    /// single-phase case: the δ⁺-SPH shift of Sun et al. 2017 only within two kernel supports of the fixed wall
+    /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the δ⁺-SPH shift of Sun et al. 2017 only within two kernel supports of the fixed wall
     /// ghosts and away from the free surface, which removes the ghosts' over-pressure at stagnation points and
-    /// corners where it comes from), `sun2017-leaving` (that band only where the flow leaves a wall, not where
-    /// it arrives), `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the
+    /// corners where it comes from), `sun2017-leaving` (the default of a single-phase case: that band only where the flow
+    /// leaves a wall, not where it arrives), `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the
     /// default, and the only choice, with several phases; docs/reference/method.md, "Particle shifting").
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,

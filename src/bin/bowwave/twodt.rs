@@ -90,8 +90,8 @@ pub struct WedgeArgs {
     /// at 2, the scene's default, the bottom lies 2 Vt below the apex at the last default sample).
     #[arg(long, default_value_t = 2.0)]
     pub depth: f64,
-    /// Particle shifting after each step: sun2017-walls (the default: within two kernel supports of a wall,
-    /// away from the free surface), sun2017-leaving (that band only where the flow leaves a wall), sun2017
+    /// Particle shifting after each step: sun2017-walls (within two kernel supports of a wall,
+    /// away from the free surface), sun2017-leaving (the default: that band only where the flow leaves a wall), sun2017
     /// (everywhere) or none (docs/reference/method.md).
     #[arg(long, default_value_t = bowwave::sph::particle_shifting::ParticleShifting::default())]
     pub shifting: bowwave::sph::particle_shifting::ParticleShifting,
