@@ -139,9 +139,29 @@ pub fn shift_from_sum<const D: usize>(
     d
 }
 
+/// The velocities of all of `pos`, borrowed from where they live: the fluid's, then the ghosts' (the ghosts
+/// follow the fluid in `pos`).
+#[derive(Clone, Copy, Debug)]
+pub struct Velocities<'a, const D: usize> {
+    /// The fluid particles' (m/s), the first of `pos`.
+    pub fluid: &'a [SVector<f64, D>],
+    /// The ghosts' (m/s), in `pos` after the fluid.
+    pub ghosts: &'a [SVector<f64, D>],
+}
+
+impl<const D: usize> Velocities<'_, D> {
+    /// The velocity of particle j of `pos`.
+    pub fn of(&self, j: usize) -> SVector<f64, D> {
+        match j.checked_sub(self.fluid.len()) {
+            None => self.fluid[j],
+            Some(g) => self.ghosts[g],
+        }
+    }
+}
+
 /// Where a step's shift applies.
 #[derive(Clone, Debug)]
-pub enum ShiftRegion<const D: usize> {
+pub enum ShiftRegion<'a, const D: usize> {
     /// Everywhere ([`ParticleShifting::Sun2017`]).
     Everywhere,
     /// [`ParticleShifting::Sun2017Walls`]: within two kernel supports of these ghosts (their indices in `pos`:
@@ -156,19 +176,19 @@ pub enum ShiftRegion<const D: usize> {
     /// free slip the sum reads the normal velocity relative to the wall).
     WhereTheFlowLeaves {
         ghosts: std::ops::Range<usize>,
-        vel: Vec<SVector<f64, D>>,
+        vel: Velocities<'a, D>,
     },
 }
 
 /// What one step's shift depends on besides the particles.
 #[derive(Clone, Debug)]
-pub struct ShiftStep<const D: usize> {
+pub struct ShiftStep<'a, const D: usize> {
     /// The particle spacing Δx (m): W(Δx) of the anti-clumping term, and the cap [`CAP`] Δx.
     pub dx: f64,
     /// U_max Δt (m): the largest fluid speed times the step.
     pub u_max_dt: f64,
     /// Where it applies.
-    pub region: ShiftRegion<D>,
+    pub region: ShiftRegion<'a, D>,
 }
 
 /// The shift of every fluid particle (the first `n_fluid` of `pos`; `volume` for all of `pos`, 0 for a ghost
@@ -184,7 +204,7 @@ pub fn displacements<const D: usize>(
     pos: &[SVector<f64, D>],
     volume: &[f64],
     n_fluid: usize,
-    step: ShiftStep<D>,
+    step: ShiftStep<'_, D>,
 ) -> Vec<SVector<f64, D>> {
     let coef = A * kernel.h * step.u_max_dt;
     let w_dx = kernel.w(step.dx);
@@ -205,7 +225,7 @@ pub fn displacements<const D: usize>(
             let read = near(&fixed);
             let leaving: Vec<bool> = (0..n_fluid)
                 .into_par_iter()
-                .map(|i| read[i] && moves_away(kernel, cells, pos, &vel, &fixed, i))
+                .map(|i| read[i] && moves_away(kernel, cells, pos, vel, &fixed, i))
                 .collect();
             Some(near(&leaving))
         }
@@ -233,14 +253,15 @@ fn moves_away<const D: usize>(
     kernel: &Kernel<D>,
     cells: &CellList<D>,
     pos: &[SVector<f64, D>],
-    vel: &[SVector<f64, D>],
+    vel: Velocities<'_, D>,
     fixed: &[bool],
     i: usize,
 ) -> bool {
     let mut separation = 0.0;
+    let u_i = vel.of(i);
     cells.for_each_within(pos, &pos[i], kernel.support, |j, rij, r| {
         if fixed[j] {
-            separation += (vel[i] - vel[j]).dot(&rij) * kernel.w(r);
+            separation += (u_i - vel.of(j)).dot(&rij) * kernel.w(r);
         }
     });
     separation > 0.0
@@ -472,11 +493,11 @@ mod tests {
         pos: &[Vector2<f64>],
         volume: &[f64],
         n_fluid: usize,
-        step: &ShiftStep<2>,
+        step: &ShiftStep<'_, 2>,
     ) -> Vec<Vector2<f64>> {
         let (ghosts, vel) = match &step.region {
             ShiftRegion::NearWalls { ghosts } => (ghosts.clone(), None),
-            ShiftRegion::WhereTheFlowLeaves { ghosts, vel } => (ghosts.clone(), Some(vel)),
+            ShiftRegion::WhereTheFlowLeaves { ghosts, vel } => (ghosts.clone(), Some(*vel)),
             ShiftRegion::Everywhere => unreachable!(),
         };
         let (coef, w_dx) = (A * kernel.h * step.u_max_dt, kernel.w(step.dx));
@@ -490,7 +511,7 @@ mod tests {
                     if ghosts.contains(&j) && volume[j] != 0.0 {
                         near = true;
                         if let Some(u) = vel {
-                            separation += (u[i] - u[j]).dot(&rij) * kernel.w(r);
+                            separation += (u.of(i) - u.of(j)).dot(&rij) * kernel.w(r);
                         }
                     }
                 });
@@ -572,7 +593,13 @@ mod tests {
         let mut moved = vec![];
         for region in [
             ShiftRegion::NearWalls { ghosts: ghosts.clone() },
-            ShiftRegion::WhereTheFlowLeaves { ghosts, vel },
+            ShiftRegion::WhereTheFlowLeaves {
+                ghosts,
+                vel: Velocities {
+                    fluid: &vel[..n_fluid],
+                    ghosts: &vel[n_fluid..],
+                },
+            },
         ] {
             let step = ShiftStep {
                 dx,
@@ -605,19 +632,24 @@ mod tests {
         let volume = vec![dx * dx; pos.len()];
         let cells = CellList::build(&pos, kernel.support);
         let ghosts = n_fluid..pos.len();
-        let step = |region| ShiftStep {
-            dx,
-            u_max_dt: 0.01 * dx,
-            region,
+        let shift = |region: ShiftRegion<'_, 2>| {
+            let step = ShiftStep {
+                dx,
+                u_max_dt: 0.01 * dx,
+                region,
+            };
+            displacements(&kernel, &cells, &pos, &volume, n_fluid, step)
         };
-        let shift = |region| displacements(&kernel, &cells, &pos, &volume, n_fluid, step(region));
         let with = |up: f64| {
-            let vel = (0..pos.len())
+            let vel: Vec<_> = (0..pos.len())
                 .map(|k| Vector2::new(0.0, if k < n_fluid { up } else { -up }))
                 .collect();
             shift(ShiftRegion::WhereTheFlowLeaves {
                 ghosts: ghosts.clone(),
-                vel,
+                vel: Velocities {
+                    fluid: &vel[..n_fluid],
+                    ghosts: &vel[n_fluid..],
+                },
             })
         };
         let band = shift(ShiftRegion::NearWalls { ghosts: ghosts.clone() });

@@ -966,7 +966,7 @@ impl<const D: usize> Simulation<D> {
     }
 
     /// Where the configured shifting moves particles (the fixed ghosts follow the fluid in `all_pos`).
-    fn shift_region(&self) -> ShiftRegion<D> {
+    fn shift_region(&self) -> ShiftRegion<'_, D> {
         let nf = self.fluid.len();
         let ghosts = nf..nf + self.ghosts.n_fixed;
         match self.cfg.shifting {
@@ -974,7 +974,10 @@ impl<const D: usize> Simulation<D> {
             ParticleShifting::Sun2017Walls => ShiftRegion::NearWalls { ghosts },
             ParticleShifting::Sun2017Leaving => ShiftRegion::WhereTheFlowLeaves {
                 ghosts,
-                vel: [self.fluid.vel.as_slice(), &self.ghosts.vel].concat(),
+                vel: particle_shifting::Velocities {
+                    fluid: &self.fluid.vel,
+                    ghosts: &self.ghosts.vel,
+                },
             },
         }
     }
