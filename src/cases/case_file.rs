@@ -206,7 +206,7 @@ pub struct Numerics {
     /// kernel supports of a wall and away from the free surface, the same only where the flow leaves a wall,
     /// everywhere, or not at all (the thesis's δ-SPH)
     /// (`sph::particle_shifting`). Unset: "sun2017-leaving" with one phase, "none" with `[[phases]]`
-    /// ([`CaseFile::shifting`], docs/decisions/wall-band-shifting.md).
+    /// ([`CaseFile::shifting`], docs/decisions/wall-leaving-shifting.md).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shifting: Option<crate::sph::particle_shifting::ParticleShifting>,
     /// "free-slip" (the default, the thesis's for impact flows) or "no-slip": every wall holds the fluid in the

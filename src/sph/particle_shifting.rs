@@ -51,7 +51,7 @@ pub enum ParticleShifting {
     /// arrives (a flat wall's stagnation point) there is none, and a shift there only costs the velocity it does
     /// not carry (ours; issue #35, studies/results/validation/LOG.md, session 49). The default of a single-phase
     /// scene: the one wall variant that reads a flat wall's stagnation point within tolerance (`jet-plate`)
-    /// and the others' corners (docs/decisions/wall-band-shifting.md).
+    /// and the others' corners (docs/decisions/wall-leaving-shifting.md).
     #[default]
     Sun2017Leaving,
 }

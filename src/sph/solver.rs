@@ -73,7 +73,7 @@ pub struct SolverConfig<const D: usize> {
     pub kernel_table: bool,
     /// Particle shifting after each step; default the band where the flow leaves a wall
     /// ([`ParticleShifting::Sun2017Leaving`],
-    /// docs/decisions/wall-band-shifting.md); it must be none with two phases or more in `multi_fluid`
+    /// docs/decisions/wall-leaving-shifting.md); it must be none with two phases or more in `multi_fluid`
     /// ([`particle_shifting::WITH_PHASES`]).
     pub shifting: ParticleShifting,
     /// Free slip (the default, the thesis's for impact flows) or no slip in the viscous term (§7.1.3).

@@ -277,7 +277,7 @@ pub struct TwoDtConfig {
     /// supports of a wall, away from the free surface: it removes the fixed ghosts' over-pressure where the
     /// flow leaves a wall or turns a corner, as the run-up does at the keel), sun2017-leaving (the same only
     /// where the flow leaves a wall; the default), sun2017 (everywhere, δ⁺-SPH) or none (the thesis's δ-SPH). Default: sun2017-leaving, or none with --air (docs/reference/method.md,
-    /// "Particle shifting"; docs/decisions/wall-band-shifting.md).
+    /// "Particle shifting"; docs/decisions/wall-leaving-shifting.md).
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
     /// Evaluate the Gaussian kernel's gradient at every pair instead of from its table in r² (the table
