@@ -276,7 +276,8 @@ pub struct TwoDtConfig {
     /// Particle shifting after each step: sun2017-walls (the shift of Sun et al. 2017 only within two kernel
     /// supports of a wall, away from the free surface: it removes the fixed ghosts' over-pressure where the
     /// flow leaves a wall or turns a corner, as the run-up does at the keel), sun2017-leaving (the same only
-    /// where the flow leaves a wall; the default), sun2017 (everywhere, δ⁺-SPH) or none (the thesis's δ-SPH). Default: sun2017-leaving, or none with --air (docs/reference/method.md,
+    /// where the flow leaves a wall; the default), sun2017 (everywhere, δ⁺-SPH) or none (the thesis's δ-SPH).
+    /// Default: sun2017-leaving, or none with --air (docs/reference/method.md,
     /// "Particle shifting"; docs/decisions/wall-leaving-shifting.md).
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,

@@ -33,11 +33,12 @@ pub struct RunArgs {
     /// Landrini 2003; corners keep fixed ghosts). Default: the case's (fixed unless it says otherwise).
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
-    /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the δ⁺-SPH shift of Sun et al. 2017 only within two kernel supports of the fixed wall
-    /// ghosts and away from the free surface, which removes the ghosts' over-pressure at stagnation points and
-    /// corners where it comes from), `sun2017-leaving` (the default of a single-phase case: that band only where the flow
-    /// leaves a wall, not where it arrives), `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the
-    /// default, and the only choice, with several phases; docs/reference/method.md, "Particle shifting").
+    /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the δ⁺-SPH shift of Sun et
+    /// al. 2017 only within two kernel supports of the fixed wall ghosts and away from the free surface, which
+    /// removes the ghosts' over-pressure at stagnation points and corners where it comes from), `sun2017-leaving`
+    /// (the default of a single-phase case: that band only where the flow leaves a wall, not where it arrives),
+    /// `sun2017` (the same shift everywhere) or `none` (the thesis's δ-SPH; the default, and the only choice, with
+    /// several phases; docs/reference/method.md, "Particle shifting").
     #[arg(long)]
     pub shifting: Option<ParticleShifting>,
     /// A physical kinematic viscosity ν in m²/s (eq. 5.3) in place of the case's viscosity; e.g. the dam break
@@ -52,8 +53,8 @@ pub struct RunArgs {
     pub wall_slip: Option<WallSlip>,
     /// A method variant applied to the case before the options above, by the names of `chart speed-accuracy
     /// --variants`: delta-sph, molteni, wcsph, wendland (Wendland C2 at h = 2 dx), pc, rk4, table, exact-kernel,
-    /// images, fixed-ghosts, sun2017, sun2017-walls, sun2017-leaving, no-shifting, alpha=A, delta=D, cfl=C, h=H (h/dx), joined
-    /// by `+` to combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
+    /// images, fixed-ghosts, sun2017, sun2017-walls, sun2017-leaving, no-shifting, alpha=A, delta=D, cfl=C, h=H
+    /// (h/dx), joined by `+` to combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
     #[arg(long)]
     pub variant: Option<String>,
     /// Do not stop the run when its mechanical energy rises by more than 1e-3 of its scale with fixed walls
