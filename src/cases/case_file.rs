@@ -213,6 +213,11 @@ pub struct Numerics {
     /// viscous term (thesis §7.1.3), meant with `viscosity = { kind = "physical", nu = … }`.
     #[serde(default)]
     pub wall_slip: crate::sph::equations::ghost_conditions::WallSlip,
+    /// "own" (the default, the thesis's) or "previous": the state each RK stage's renormalised density
+    /// gradient is taken at; "previous" takes the previous stage's after a step's first stage, one pass over
+    /// the pairs a stage instead of two (`sph::main_loop::GradientStage`).
+    #[serde(default)]
+    pub gradient_stage: crate::sph::main_loop::GradientStage,
 }
 
 fn default_kernel_table() -> bool {
@@ -240,6 +245,7 @@ impl Default for Numerics {
             kernel_table: true,
             shifting: Default::default(),
             wall_slip: Default::default(),
+            gradient_stage: Default::default(),
         }
     }
 }

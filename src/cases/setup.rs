@@ -59,6 +59,7 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     cfg.kernel_table = n.kernel_table;
     cfg.shifting = case.shifting();
     cfg.wall_slip = n.wall_slip;
+    cfg.gradient_stage = n.gradient_stage;
     cfg.multi_fluid = multi_fluid(case, &cfg.eos);
     cfg
 }

@@ -11,6 +11,7 @@ use crate::sph::{
 /// A method variant, by name: `delta-sph` (the default scheme), `molteni` (Molteni–Colagrossi diffusion (5.4),
 /// no gradient correction), `wcsph` (no density diffusion), `wendland` (Wendland C2 kernel, h = 2 dx),
 /// `pc` (predictor–corrector at its default CFL), `table`/`exact-kernel` (tabulated or exact kernel gradient),
+/// `lagged-gradient` (after a step's first stage the δ-term reads the previous stage's density gradient),
 /// `images`/`fixed-ghosts` (every wall's straight sides as image ghosts, or the fixed lattice), or `alpha=A`,
 /// `delta=D`, `cfl=C`, `h=H` (h/dx) for one parameter. Names joined by `+` apply in turn, left to right
 /// (`wendland+h=1.4`: the Wendland kernel at h = 1.4 dx).
@@ -57,10 +58,11 @@ fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         "sun2017-walls" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017Walls),
         "sun2017-leaving" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::Sun2017Leaving),
         "no-shifting" => n.shifting = Some(crate::sph::particle_shifting::ParticleShifting::None),
+        "lagged-gradient" => n.gradient_stage = crate::sph::main_loop::GradientStage::Previous,
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
                 )
             })?;
             let x: f64 = v

@@ -12,6 +12,7 @@ pub mod free_surface;
 pub mod integrator;
 pub mod kernel;
 pub mod kernel_table;
+pub mod main_loop;
 pub mod mls;
 pub mod multi_fluid;
 pub mod neighbours;

@@ -17,10 +17,8 @@ use super::body_force::BodyForce;
 use super::boundary::{Boundary, GhostGeometry, Mirror};
 use super::eos::Eos;
 use super::equations::{
-    continuity,
-    density_diffusion::{self, DensityDiffusion},
+    density_diffusion::DensityDiffusion,
     ghost_conditions::{self, WallSlip},
-    pressure_force,
     renormalization::RenormalizedGradient,
     timestep,
     viscosity::{self, Viscosity},
@@ -29,6 +27,7 @@ use super::equations::{
 use super::integrator::Integrator;
 use super::kernel::{Kernel, KernelKind};
 use super::kernel_table::{GradientFactor, GradientTable};
+use super::main_loop::{GradientStage, MainLoop};
 use super::mls::{mls_fit, MlsFit};
 use super::multi_fluid::{self, MultiFluid, ShepardDensity, StateDensity};
 use super::neighbours::CellList;
@@ -82,6 +81,9 @@ pub struct SolverConfig<const D: usize> {
     /// is the single-phase δ-SPH with `eos`, which takes none of that path. With phases, `eos` should be the
     /// first phase's (the free-surface, sensor and energy diagnostics read it).
     pub multi_fluid: Option<MultiFluid>,
+    /// Which state the δ-term's ⟨∇ρ⟩^L is taken at in each stage of a step: its own (the default, the
+    /// thesis's) or, after the first stage, the previous stage's ([`GradientStage`]).
+    pub gradient_stage: GradientStage,
 }
 
 /// Interpolation of the fluid at the ghosts' mirror points.
@@ -123,6 +125,7 @@ impl<const D: usize> SolverConfig<D> {
             shifting: ParticleShifting::default(),
             wall_slip: WallSlip::FreeSlip,
             multi_fluid: None,
+            gradient_stage: GradientStage::Own,
         }
     }
 }
@@ -637,7 +640,17 @@ impl<const D: usize> Simulation<D> {
     }
 
     /// Stages 4–5: the rates of change of ρ and u.
-    fn rates(&mut self, t: f64, pos: &[SVector<f64, D>], vel: &[SVector<f64, D>], rho: &[f64]) -> Rates<D> {
+    ///
+    /// `first`: the first evaluation of a step, which takes the gradients of its own state whatever
+    /// [`SolverConfig::gradient_stage`] says.
+    fn rates(
+        &mut self,
+        t: f64,
+        pos: &[SVector<f64, D>],
+        vel: &[SVector<f64, D>],
+        rho: &[f64],
+        first: bool,
+    ) -> Rates<D> {
         self.prepare(t, pos, vel, rho);
         // The integrated density (with several phases `rho` below is the state equation's, which may differ).
         let rho_tilde = rho;
@@ -654,10 +667,18 @@ impl<const D: usize> Simulation<D> {
         let clock = Instant::now();
         // The neighbour lists found here are kept for the main loop (stage 5).
         let need_grad = cfg.diffusion.needs_gradient();
-        let gf = match &self.grad_table {
-            Some(t) => GradientFactor::Table(t),
-            None => GradientFactor::Exact(kernel),
-        };
+        let gf = gradient_factor(&self.grad_table, kernel);
+        if !first && need_grad && cfg.gradient_stage == GradientStage::Previous && cfg.multi_fluid.is_none() {
+            // Stages 4–5 in one pass: the δ-term reads the previous stage's gradients (the images take their
+            // particles'), and this state's are summed on the way for the next stage.
+            mirror_image_gradients(&mut self.ghosts, &self.grad_rho);
+            let (gathered, grad) = self
+                .main_loop(pos, vel, rho)
+                .with_next_gradient(&self.cells, self.kernel.support);
+            self.grad_rho = grad;
+            self.timings.main_loop += clock.elapsed().as_secs_f64();
+            return Rates::from_gather(gathered);
+        }
         self.neighbours.resize_with(nf, Vec::new);
         let pass = GradientPass {
             pos,
@@ -706,60 +727,39 @@ impl<const D: usize> Simulation<D> {
             self.timings.main_loop += clock.elapsed().as_secs_f64();
             return rates;
         }
-        let grad_rho = &self.grad_rho;
-        let neighbours = &self.neighbours;
-        let pressure = &self.pressure;
-        let eos = cfg.eos;
-        let visc = cfg.viscosity.coefficient(D, eos.rho0, h, eos.c0);
-        let diff = cfg.delta * eos.c0 * h;
-        let kind = cfg.diffusion;
-        let body = cfg.body_force;
-
         // Stage 5: continuity and momentum, eq. (5.1).
-        let gathered: Gathered<D> = (0..nf)
-            .into_par_iter()
-            .map(|i| {
-                let (rho_i, u_i, p_i) = (rho[i], vel[i], pressure[i]);
-                let mut drho = 0.0;
-                let mut dvel = SVector::<f64, D>::zeros();
-                let mut max_pi = 0.0f64;
-                for &j in &neighbours[i] {
-                    let j = j as usize;
-                    let rij = pos[i] - all_pos[j];
-                    let r2 = rij.norm_squared();
-                    let gw = rij * gf.at(r2);
-                    let (u_j, rho_j, p_j, v_j, grad_j, u_visc_j) = if j < nf {
-                        (vel[j], rho[j], pressure[j], volume[j], grad_rho[j], vel[j])
-                    } else {
-                        let g = j - nf;
-                        (
-                            gs.vel[g],
-                            gs.rho[g],
-                            gs.p[g],
-                            gs.volume[g],
-                            gs.grad_rho[g],
-                            gs.viscous_velocity(g),
-                        )
-                    };
-                    let u_ji = u_j - u_i;
-                    drho += continuity::velocity_divergence(rho_i, &u_ji, &gw, v_j);
-                    if kind != DensityDiffusion::None {
-                        let psi = density_diffusion::psi(kind, rho_i, rho_j, &rij, r2, &grad_rho[i], &grad_j);
-                        drho += diff * psi.dot(&gw) * v_j;
-                    }
-                    dvel += pressure_force::pressure_acceleration(p_i, p_j, rho_i, &gw, v_j);
-                    let pi = viscosity::pi_ij(&(u_visc_j - u_i), &rij, r2, h);
-                    dvel += viscosity::viscous_acceleration(visc, rho_i, pi, &gw, v_j);
-                    max_pi = max_pi.max(pi.abs());
-                }
-                dvel += body.acceleration(&pos[i]);
-                let signal = timestep::signal_speed(eos.sound_speed(rho_i), u_i.norm(), h, max_pi);
-                (drho, (dvel, signal))
-            })
-            .unzip();
-        let rates = Rates::from_gather(gathered);
+        let rates = Rates::from_gather(self.main_loop(pos, vel, rho).over_lists(&self.neighbours));
         self.timings.main_loop += clock.elapsed().as_secs_f64();
         rates
+    }
+
+    /// Stage 5 over the state (pos, vel, rho) that [`Simulation::prepare`] has prepared, with the fluid's
+    /// gradients in `grad_rho`.
+    fn main_loop<'a>(
+        &'a self,
+        pos: &'a [SVector<f64, D>],
+        vel: &'a [SVector<f64, D>],
+        rho: &'a [f64],
+    ) -> MainLoop<'a, D> {
+        let cfg = &self.cfg;
+        let h = self.kernel.h;
+        MainLoop {
+            pos,
+            vel,
+            rho,
+            pressure: &self.pressure,
+            volume: &self.volume,
+            grad_rho: &self.grad_rho,
+            all_pos: &self.all_pos,
+            ghosts: &self.ghosts,
+            gradient: gradient_factor(&self.grad_table, self.kernel),
+            eos: cfg.eos,
+            body: cfg.body_force,
+            diffusion: cfg.diffusion,
+            diff: cfg.delta * cfg.eos.c0 * h,
+            visc: cfg.viscosity.coefficient(D, cfg.eos.rho0, h, cfg.eos.c0),
+            h,
+        }
     }
 
     /// Re-orders the fluid particles by cell for memory locality (counting sort).
@@ -788,7 +788,7 @@ impl<const D: usize> Simulation<D> {
         let pos0 = self.fluid.pos.clone();
         let vel0 = self.fluid.vel.clone();
         let rho0 = self.fluid.rho.clone();
-        let k1 = self.rates(t0, &pos0, &vel0, &rho0);
+        let k1 = self.rates(t0, &pos0, &vel0, &rho0, true);
         if !self.sensors.is_empty() {
             // The first stage has prepared the state at t0: the sensors read it at no extra search.
             self.read_sensors();
@@ -833,17 +833,17 @@ impl<const D: usize> Simulation<D> {
                 };
                 let (p2, v2, r2) = axpy(0.5 * dt, &vel0, &k1);
                 drop(k1);
-                let k2 = self.rates(t0 + 0.5 * dt, &p2, &v2, &r2);
+                let k2 = self.rates(t0 + 0.5 * dt, &p2, &v2, &r2, false);
                 drop((p2, r2));
                 add(&mut sum_vel, &mut sum_dvel, &mut sum_drho, 2.0, &v2, &k2);
                 let (p3, v3, r3) = axpy(0.5 * dt, &v2, &k2);
                 drop((v2, k2));
-                let k3 = self.rates(t0 + 0.5 * dt, &p3, &v3, &r3);
+                let k3 = self.rates(t0 + 0.5 * dt, &p3, &v3, &r3, false);
                 drop((p3, r3));
                 add(&mut sum_vel, &mut sum_dvel, &mut sum_drho, 2.0, &v3, &k3);
                 let (p4, v4, r4) = axpy(dt, &v3, &k3);
                 drop((v3, k3));
-                let k4 = self.rates(t0 + dt, &p4, &v4, &r4);
+                let k4 = self.rates(t0 + dt, &p4, &v4, &r4, false);
                 drop((p4, r4));
                 add(&mut sum_vel, &mut sum_dvel, &mut sum_drho, 1.0, &v4, &k4);
                 drop((v4, k4));
@@ -855,7 +855,7 @@ impl<const D: usize> Simulation<D> {
             }
             Integrator::PredictorCorrector => {
                 let (p2, v2, r2) = axpy(dt, &vel0, &k1);
-                let k2 = self.rates(t0 + dt, &p2, &v2, &r2);
+                let k2 = self.rates(t0 + dt, &p2, &v2, &r2, false);
                 let w = 0.5 * dt;
                 let n = pos0.len();
                 let pos = (0..n)
@@ -1210,6 +1210,14 @@ impl<const D: usize> GradientPass<'_, D> {
     }
 }
 
+/// The kernel-gradient factor F(r²): the table's, or the kernel's own.
+fn gradient_factor<const D: usize>(table: &Option<GradientTable>, kernel: Kernel<D>) -> GradientFactor<'_, D> {
+    match table {
+        Some(t) => GradientFactor::Table(t),
+        None => GradientFactor::Exact(kernel),
+    }
+}
+
 /// Appends to a neighbour list that lives from step to step, growing it by an eighth (at least 8 places) when
 /// full rather than doubling it: a list keeps the largest capacity it has needed, and doubling would leave up to
 /// half of it empty (a 3D list of about 270 neighbours held 512 places, 2 KB; here it holds at most an eighth
@@ -1322,7 +1330,7 @@ mod tests {
         let eos = cfg.eos;
         let mut sim = Simulation::new(cfg, fluid, vec![Box::new(wall)]);
         let (pos, vel, rho) = (sim.fluid.pos.clone(), sim.fluid.vel.clone(), sim.fluid.rho.clone());
-        sim.rates(0.0, &pos, &vel, &rho);
+        sim.rates(0.0, &pos, &vel, &rho, true);
         let gs = &sim.ghosts;
         assert!(gs.image_source.len() > 20, "{} images", gs.image_source.len());
         for (k, &j) in gs.image_source.iter().enumerate() {
@@ -1338,5 +1346,99 @@ mod tests {
                 grad_g.dot(&n)
             );
         }
+    }
+
+    /// The fast path's oracle: a stage that reads the previous stage's gradients in one pass over the pairs
+    /// ([`GradientStage::Previous`]) gives, when those gradients are its own state's, the two-pass rates and
+    /// the same gradients, bit for bit, with fixed ghosts and with image ghosts.
+    #[test]
+    fn one_pass_stage_gives_the_two_pass_rates_and_gradients_bit_for_bit() {
+        let (dx, g) = (0.05, 9.81);
+        for kind in [GhostKind::Fixed, GhostKind::Images] {
+            let mut cfg = SolverConfig::new(dx, 1000.0, 20.0, BodyForce::Uniform(Vector2::new(0.0, -g)));
+            cfg.domain = Some((Vector2::new(-1.0, -1.0), Vector2::new(2.0, 2.0)));
+            cfg.gradient_stage = GradientStage::Previous;
+            let support = cfg.kernel.support_over_h() * cfg.h;
+            let wall = BoxWall::new("tank", Vector2::zeros(), Vector2::new(0.6, 0.6), dx, support)
+                .unwrap()
+                .with_ghosts(kind);
+            let mut fluid = Fluid::default();
+            for i in 0..11 {
+                for k in 0..8 {
+                    // A disordered lattice with a swirl and a density that varies along both axes.
+                    let (a, b) = (i as f64, k as f64);
+                    let x = Vector2::new(
+                        (a + 0.5 + 0.1 * (1.7 * b).sin()) * dx,
+                        (b + 0.5 + 0.1 * (2.3 * a).cos()) * dx,
+                    );
+                    let u = Vector2::new(0.3 * (x.y - 0.2), -0.2 * (x.x - 0.3));
+                    let rho = cfg.eos.density(1000.0 * g * (0.4 - x.y) + 80.0 * x.x);
+                    fluid.push(x, u, rho, rho * dx * dx, 0.0);
+                }
+            }
+            let mut sim = Simulation::new(cfg, fluid, vec![Box::new(wall)]);
+            let (pos, vel, rho) = (sim.fluid.pos.clone(), sim.fluid.vel.clone(), sim.fluid.rho.clone());
+            let two_pass = sim.rates(0.0, &pos, &vel, &rho, true);
+            let own = sim.grad_rho.clone();
+            assert!(own.iter().any(|v| v.norm() > 0.0));
+            let gradient_time = sim.timings.density_gradient;
+            let one_pass = sim.rates(0.0, &pos, &vel, &rho, false);
+            assert_eq!(
+                sim.timings.density_gradient, gradient_time,
+                "no pass of its own for the gradients"
+            );
+            assert_eq!(one_pass.drho, two_pass.drho, "{kind:?}");
+            assert_eq!(one_pass.dvel, two_pass.dvel, "{kind:?}");
+            assert_eq!(one_pass.max_signal, two_pass.max_signal);
+            assert_eq!(sim.grad_rho, own, "{kind:?}: the gradients summed for the next stage");
+        }
+    }
+
+    /// A step with one-pass stages still starts from its state alone: a run resumed from a state taken halfway
+    /// ([`Simulation::state`], as a checkpoint stores it) takes the same steps, bit for bit, as the unbroken run.
+    #[test]
+    fn lagged_gradient_run_resumed_from_a_state_takes_the_same_steps() {
+        let dx = 0.05;
+        let build = || {
+            let mut cfg = SolverConfig::new(dx, 1000.0, 20.0, BodyForce::Uniform(Vector2::new(0.0, -9.81)));
+            cfg.domain = Some((Vector2::new(-1.0, -1.0), Vector2::new(2.0, 2.0)));
+            cfg.gradient_stage = GradientStage::Previous;
+            let support = cfg.kernel.support_over_h() * cfg.h;
+            let wall = BoxWall::new("tank", Vector2::zeros(), Vector2::new(1.0, 1.0), dx, support).unwrap();
+            let mut fluid = Fluid::default();
+            // A column of 0.3 × 0.5 at rest against the left wall: it collapses.
+            for i in 0..6 {
+                for k in 0..10 {
+                    let x = Vector2::new((i as f64 + 0.5) * dx, (k as f64 + 0.5) * dx);
+                    let rho = cfg.eos.density(1000.0 * 9.81 * (0.5 - x.y));
+                    fluid.push(x, Vector2::zeros(), rho, rho * dx * dx, 0.0);
+                }
+            }
+            Simulation::new(cfg, fluid, vec![Box::new(wall)])
+        };
+        let mut unbroken = build();
+        let mut first_half = build();
+        for _ in 0..6 {
+            first_half.step().unwrap();
+        }
+        let mut resumed = build();
+        resumed.set_state(first_half.state());
+        for _ in 0..12 {
+            unbroken.step().unwrap();
+        }
+        for _ in 0..6 {
+            resumed.step().unwrap();
+        }
+        let bits = |s: &Simulation<2>| -> Vec<u64> {
+            let f = &s.fluid;
+            f.pos
+                .iter()
+                .chain(&f.vel)
+                .flat_map(|v| [v.x.to_bits(), v.y.to_bits()])
+                .chain(f.rho.iter().map(|r| r.to_bits()))
+                .collect()
+        };
+        assert!(unbroken.fluid.vel.iter().any(|u| u.norm() > 1e-3), "the column moves");
+        assert_eq!(bits(&resumed), bits(&unbroken));
     }
 }
