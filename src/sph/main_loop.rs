@@ -1,13 +1,13 @@
 //! Stage 5 of an evaluation, the main loop: continuity and momentum, eq. (5.1), gathered over each fluid
 //! particle's neighbours, in one of two forms:
 //!
-//! - [`MainLoop::over_lists`] reads the neighbour lists stage 4 built while it took the renormalised density
+//! - `MainLoop::over_lists` reads the neighbour lists stage 4 built while it took the renormalised density
 //!   gradients ⟨∇ρ⟩^L of the same state (eqs. 4.19–4.20): two passes over the pairs, the thesis's scheme.
-//! - [`MainLoop::with_next_gradient`] scans the cells itself, reads the gradients of the integrator's previous
+//! - `MainLoop::with_next_gradient` scans the cells itself, reads the gradients of the integrator's previous
 //!   stage and sums this state's on the way, for the next stage: one pass over the pairs
 //!   ([`GradientStage::Previous`]).
 //!
-//! The pair terms are the same functions in both ([`MainLoop::add_pair`]).
+//! The pair terms are the same functions in both (`MainLoop::add_pair`).
 
 use super::body_force::BodyForce;
 use super::eos::Eos;
