@@ -40,6 +40,26 @@ pub enum GradientStage {
     Previous,
 }
 
+impl std::str::FromStr for GradientStage {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "own" => Ok(Self::Own),
+            "previous" => Ok(Self::Previous),
+            v => Err(format!("expected `own` or `previous`, got `{v}`")),
+        }
+    }
+}
+
+impl std::fmt::Display for GradientStage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Own => "own",
+            Self::Previous => "previous",
+        })
+    }
+}
+
 /// What stage 5 reads: the state of the stage, the ghosts' values and the gradients it takes the δ-term from.
 pub(super) struct MainLoop<'a, const D: usize> {
     pub pos: &'a [SVector<f64, D>],

@@ -7,6 +7,7 @@
 //! there. Lengths are in units of the ship length L, speeds in √(gL).
 
 use crate::sph::density_diffusion::DensityDiffusion;
+use crate::sph::main_loop::GradientStage;
 use crate::sph::particle_shifting::ParticleShifting;
 use serde::{Deserialize, Serialize};
 
@@ -273,6 +274,11 @@ pub struct TwoDtConfig {
     /// method comparisons.
     #[arg(long, default_value_t = d().diffusion)]
     pub diffusion: DensityDiffusion,
+    /// The state each RK stage's renormalised density gradient (the δ-term's) is taken at: own (the thesis's)
+    /// or previous (after a step's first stage the previous stage's, one pass over the pairs a stage instead of
+    /// two; `sph::main_loop::GradientStage`, BENCHMARKS.md session 51).
+    #[arg(long, default_value_t = d().gradient_stage)]
+    pub gradient_stage: GradientStage,
     /// Particle shifting after each step: sun2017-walls (the shift of Sun et al. 2017 only within two kernel
     /// supports of a wall, away from the free surface: it removes the fixed ghosts' over-pressure where the
     /// flow leaves a wall or turns a corner, as the run-up does at the keel), sun2017-leaving (the same only
@@ -341,6 +347,7 @@ impl Default for TwoDtConfig {
             plunge_circulation: PlungeCirculation::AtLeast(0.02),
             output_dx: 0.005,
             diffusion: DensityDiffusion::DeltaSph,
+            gradient_stage: GradientStage::Own,
             shifting: None,
             exact_kernel: false,
             cfl: None,
@@ -592,6 +599,7 @@ mod tests {
             plunge_circulation: PlungeCirculation::Off,
             packing: Packing::On,
             diffusion: DensityDiffusion::MolteniColagrossi,
+            gradient_stage: GradientStage::Previous,
             ..d
         };
         let t = toml::to_string(&set).unwrap();

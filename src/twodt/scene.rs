@@ -261,6 +261,7 @@ pub fn build(hull: Arc<HullSurface>, cfg: &TwoDtConfig) -> anyhow::Result<Scene>
     let mut cfg_s = SolverConfig::new(dx_f, 1.0, c0, BodyForce::Uniform(V2::new(0.0, -1.0)));
     cfg_s.h = h;
     cfg_s.diffusion = cfg.diffusion;
+    cfg_s.gradient_stage = cfg.gradient_stage;
     cfg_s.kernel_table = !cfg.exact_kernel;
     cfg_s.shifting = cfg.shifting();
     if let Some(alpha) = cfg.alpha {
