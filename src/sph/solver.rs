@@ -7,6 +7,9 @@
 //! 4. compute the renormalised density gradients ⟨∇ρ⟩^L (δ-SPH only),
 //! 5. gather the continuity and momentum equations (5.1) for every fluid particle.
 //!
+//! With [`GradientStage::Previous`] the evaluations after a step's first do 4–5 in one pass, the δ-term reading the
+//! previous evaluation's gradients ([`super::main_loop`]).
+//!
 //! After the integrator's stages (RK4 or predictor–corrector) and the checks of the new state, an optional
 //! stage moves every particle by the particle shifting of Sun et al. (2017) ([`super::particle_shifting`]).
 //!
