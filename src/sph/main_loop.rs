@@ -93,7 +93,7 @@ struct Particle<const D: usize> {
 
 /// One particle's sums over its neighbours.
 #[derive(Clone, Copy)]
-pub(super) struct PairSums<const D: usize> {
+struct PairSums<const D: usize> {
     drho: f64,
     dvel: SVector<f64, D>,
     max_pi: f64,
@@ -202,11 +202,7 @@ impl<const D: usize> MainLoop<'_, D> {
                         return;
                     }
                     let gw = rij * self.gradient.at(r2);
-                    let (rho_j, v_j) = if j < nf {
-                        (self.rho[j], self.volume[j])
-                    } else {
-                        (gs.rho[j - nf], gs.volume[j - nf])
-                    };
+                    let (rho_j, v_j) = gs.density_and_volume(j, self.rho, self.volume);
                     acc.add(&gw, &rij, rho_j - pi.rho, v_j);
                     self.add_pair(&pi, j, &rij, r2, &gw, &mut s);
                 });

@@ -166,6 +166,18 @@ impl<const D: usize> GhostState<D> {
     pub fn viscous_velocity(&self, g: usize) -> SVector<f64, D> {
         self.vel_viscous.get(g).copied().unwrap_or(self.vel[g])
     }
+
+    /// Density and active volume of neighbour `j` in the combined fluid-then-ghost numbering: a fluid particle's
+    /// from `rho` and `volume` (one entry per fluid particle), a ghost's from this state.
+    #[inline]
+    pub fn density_and_volume(&self, j: usize, rho: &[f64], volume: &[f64]) -> (f64, f64) {
+        let nf = rho.len();
+        if j < nf {
+            (rho[j], volume[j])
+        } else {
+            (self.rho[j - nf], self.volume[j - nf])
+        }
+    }
 }
 
 /// (velocity, density, pressure, density gradient, active volume, phase, velocity under no slip) assigned to
@@ -1179,7 +1191,6 @@ impl<const D: usize> GradientPass<'_, D> {
         rho: &[f64],
         same: impl Fn(usize, usize) -> bool + Sync,
     ) -> Vec<SVector<f64, D>> {
-        let nf = self.pos.len();
         let gs = self.ghosts;
         neighbours
             .par_iter_mut()
@@ -1195,11 +1206,7 @@ impl<const D: usize> GradientPass<'_, D> {
                         push_tight(list, j as u32);
                         if self.need_grad && same(i, j) {
                             let gw = rij * self.gradient.at(r2);
-                            let (rho_j, v_j) = if j < nf {
-                                (rho[j], self.volume[j])
-                            } else {
-                                (gs.rho[j - nf], gs.volume[j - nf])
-                            };
+                            let (rho_j, v_j) = gs.density_and_volume(j, rho, self.volume);
                             acc.add(&gw, &rij, rho_j - rho[i], v_j);
                         }
                     });
