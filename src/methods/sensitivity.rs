@@ -252,8 +252,9 @@ pub struct Band {
     /// Baseline plus the sum of every parameter's most negative (most positive) change: an estimate of what
     /// the combinations could span if the effects added up, not a run.
     pub superposed: (f64, f64),
-    /// Cases that did not plunge (their parameter and value).
-    pub no_plunge: Vec<String>,
+    /// Cases without a value of the metric (their parameter and value): for a plunge metric the cases that did
+    /// not plunge, for the crest the cases whose `eta.csv` was not kept.
+    pub missing: Vec<String>,
 }
 
 /// The band of `metric` over the rows; `None` when the approximation itself did not plunge or is missing.
@@ -275,7 +276,7 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
     let mut bars = vec![];
     let (mut lo, mut hi) = (base, base);
     let (mut sum_neg, mut sum_pos) = (0.0, 0.0);
-    let mut no_plunge = vec![];
+    let mut without = vec![];
     for k in params {
         let of_k: Vec<&Row> = rows.iter().filter(|r| r.parameter == k).collect();
         let mut pts: Vec<(f64, f64, &str)> = vec![(of_k[0].baseline_value, base, base_mark)];
@@ -284,7 +285,7 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
             match (metric.get)(r) {
                 Some(v) => pts.push((r.value, v, mark(r))),
                 None => {
-                    no_plunge.push(format!("{k} = {}", r.value));
+                    without.push(format!("{k} = {}", r.value));
                     missing.push(r.value.to_string());
                 }
             }
@@ -301,10 +302,10 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
         sum_pos += (max.1 - base).max(0.0);
         let label = |p: (f64, f64, &str)| format!("{} {}{}", short(p.0), format_value(p.1), p.2);
         bars.push(TornadoBar {
-            label: if missing.is_empty() {
-                k.to_string()
-            } else {
-                format!("{k} (none at {})", missing.join(", "))
+            label: match (missing.is_empty(), metric.of_plunge) {
+                (true, _) => k.to_string(),
+                (false, true) => format!("{k} (none at {})", missing.join(", ")),
+                (false, false) => format!("{k} (not recorded at {})", missing.join(", ")),
             },
             low: (min.1, label(min)),
             high: (max.1, label(max)),
@@ -315,7 +316,7 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
         bars,
         one_at_a_time: (lo, hi),
         superposed: (base + sum_neg, base + sum_pos),
-        no_plunge,
+        missing: without,
     })
 }
 
@@ -344,7 +345,7 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row], crest_carried: &[usi
          not a run.\n\n| metric | approximation | one at a time | superposed (estimate) | published | inside one-at-a-time? |\n|---|---|---|---|---|---|\n",
         rows.len()
     );
-    let mut notes = String::new();
+    let (mut no_plunge, mut no_crest) = (String::new(), String::new());
     for m in metrics() {
         let Some(b) = band(rows, &m) else { continue };
         let pubv = published.as_ref().zip(m.published).map(|(j, f)| f(j));
@@ -369,11 +370,19 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row], crest_carried: &[usi
             pubv.map(|v| format!("{v:.4}")).unwrap_or_else(|| "–".into()),
             inside.unwrap_or("–")
         );
-        if !b.no_plunge.is_empty() && notes.is_empty() {
-            notes = format!(
-                "\nNo plunge, so no plunge metric (left out of their bars): {}.\n",
-                b.no_plunge.join(", ")
-            );
+        // Regression: a case whose crest was not recorded (no `eta.csv`) was listed as one without a plunge.
+        let note = if m.of_plunge { &mut no_plunge } else { &mut no_crest };
+        if !b.missing.is_empty() && note.is_empty() {
+            *note = match m.of_plunge {
+                true => format!(
+                    "\nNo plunge, so no plunge metric (left out of their bars): {}.\n",
+                    b.missing.join(", ")
+                ),
+                false => format!(
+                    "\nNo highest crest recorded (no `eta.csv`, none carried; left out of the crest bars): {}.\n",
+                    b.missing.join(", ")
+                ),
+            };
         }
         let marks: Vec<(String, f64)> = pubv.map(|v| vec![(format!("published {v:.3}"), v)]).unwrap_or_default();
         let png = dir.join(format!("tornado_{}.png", m.key));
@@ -394,7 +403,8 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row], crest_carried: &[usi
         )?;
         files.push(png);
     }
-    md.push_str(&notes);
+    md.push_str(&no_plunge);
+    md.push_str(&no_crest);
     if !crest_carried.is_empty() {
         let cases: Vec<String> = crest_carried.iter().map(|c| c.to_string()).collect();
         let _ = write!(
@@ -464,13 +474,41 @@ mod tests {
         assert_eq!((trim.low.0, trim.high.0), (0.30, 0.32));
         assert_eq!(b.one_at_a_time, (0.25, 0.35));
         assert!((b.superposed.0 - 0.25).abs() < 1e-12 && (b.superposed.1 - 0.37).abs() < 1e-12);
-        assert_eq!(b.no_plunge, vec!["trim = 1.5".to_string()]);
+        assert_eq!(b.missing, vec!["trim = 1.5".to_string()]);
         let csv = table(&rows);
         assert!(
             csv.lines().nth(1).unwrap().starts_with("1,approximation,,,true,0.3,"),
             "{csv}"
         );
         assert!(csv.lines().nth(5).unwrap().starts_with("5,trim,1.5,0,false,,"), "{csv}");
+    }
+
+    /// Regression: `band.md` listed a case that plunged but whose highest crest was not recorded (its `eta.csv`
+    /// not kept) under "No plunge", and its crest bar said "none at". Plunge and crest notes are now apart.
+    #[test]
+    fn missing_crest_is_not_called_no_plunge() {
+        let mut rows = vec![
+            row(1, "", f64::NAN, f64::NAN, Some(0.30)),
+            row(2, "entrance_angle", 19.0, 14.6, Some(0.35)),
+            row(3, "trim", 1.5, 0.0, None),
+        ];
+        rows[0].crest = Some((0.9, 0.15));
+        rows[2].crest = Some((0.5, 0.14));
+        let crest = metrics().into_iter().find(|m| m.key == "crest_max_over_d").unwrap();
+        let b = band(&rows, &crest).unwrap();
+        assert_eq!(b.missing, vec!["entrance_angle = 19".to_string()]);
+        assert!(b.bars.iter().any(|b| b.label == "entrance_angle (not recorded at 19)"));
+        let dir = std::env::temp_dir().join(format!("bowwave-band-notes-{}", std::process::id()));
+        write(&dir, "athena", 0.5, &rows, &[]).unwrap();
+        let md = std::fs::read_to_string(dir.join("band.md")).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+        let no_plunge = md.lines().find(|l| l.starts_with("No plunge")).unwrap();
+        assert!(
+            no_plunge.contains("trim = 1.5") && !no_plunge.contains("entrance"),
+            "{md}"
+        );
+        let no_crest = md.lines().find(|l| l.starts_with("No highest crest")).unwrap();
+        assert!(no_crest.contains("entrance_angle = 19"), "{md}");
     }
 
     /// A gather from committed case files (no `eta.csv`) takes each case's highest crest from the earlier table
