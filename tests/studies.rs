@@ -808,3 +808,42 @@ fn a_3d_study_refuses_a_second_spacing_tank_or_hull() {
         assert!(wanted.iter().all(|w| e.contains(w)), "{body}: {e}");
     }
 }
+
+/// Issue #30, item 4: a report that compares an approximated Athena or Alliance with the published jets says what
+/// the hull-or-method campaign measured about the difference; an exact hull's report, or one without published
+/// jets, does not.
+#[test]
+fn report_on_an_approximated_hull_says_what_the_difference_was_measured_to_mean() {
+    use bowwave::studies::collect::{report, Comparison};
+    let comp = Comparison {
+        fr: 0.5,
+        quantity: "x_plunge/L",
+        ours: Some(0.31),
+        published: 0.191,
+        our_dx: 3.5e-4,
+        published_dx: 1.9e-4,
+        note: String::new(),
+    };
+    let heading = "What the difference was measured to mean";
+    let athena = report("s", "athena", "approximation", "", &[], std::slice::from_ref(&comp), 1);
+    assert!(
+        athena.contains(heading) && athena.contains("a fit, not a prediction"),
+        "{athena}"
+    );
+    let alliance = report(
+        "s",
+        "alliance",
+        "approximation",
+        "",
+        &[],
+        std::slice::from_ref(&comp),
+        1,
+    );
+    assert!(
+        alliance.contains(heading) && alliance.contains("Table 10.2"),
+        "{alliance}"
+    );
+    assert!(!report("s", "athena", "exact", "", &[], std::slice::from_ref(&comp), 1).contains(heading));
+    assert!(!report("s", "wigley", "approximation", "", &[], std::slice::from_ref(&comp), 1).contains(heading));
+    assert!(!report("s", "athena", "approximation", "", &[], &[], 1).contains(heading));
+}

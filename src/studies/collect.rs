@@ -314,6 +314,12 @@ pub fn report(
                 c.note
             );
         }
+        if let Some(reading) = super::gap_reading::gap_reading(hull).filter(|_| hull_status != "exact") {
+            let _ = writeln!(
+                s,
+                "\n### What the difference was measured to mean (issue #30)\n\n{reading}"
+            );
+        }
     }
     let with_air: Vec<String> = recs
         .iter()

@@ -1,9 +1,11 @@
 //! Froude sweeps: a study file (`study_file`) resolved into cases, run resumably and in parallel (`runner`),
-//! gathered into tables and a report against the published jets (`collect`) and figures (`figures`);
+//! gathered into tables and a report against the published jets (`collect`, with what the difference was measured
+//! to mean for an approximated hull, `gap_reading`) and figures (`figures`);
 //! `status` tells where each case stands. Studies orchestrate; they hold no physics.
 
 pub mod collect;
 pub mod figures;
+pub mod gap_reading;
 pub mod lock;
 pub mod runner;
 pub mod ship3d;
