@@ -276,17 +276,17 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
     let mut bars = vec![];
     let (mut lo, mut hi) = (base, base);
     let (mut sum_neg, mut sum_pos) = (0.0, 0.0);
-    let mut without = vec![];
+    let mut missing_cases = vec![];
     for k in params {
         let of_k: Vec<&Row> = rows.iter().filter(|r| r.parameter == k).collect();
         let mut pts: Vec<(f64, f64, &str)> = vec![(of_k[0].baseline_value, base, base_mark)];
-        let mut missing = vec![];
+        let mut missing_values = vec![];
         for r in of_k {
             match (metric.get)(r) {
                 Some(v) => pts.push((r.value, v, mark(r))),
                 None => {
-                    without.push(format!("{k} = {}", r.value));
-                    missing.push(r.value.to_string());
+                    missing_cases.push(format!("{k} = {}", r.value));
+                    missing_values.push(r.value.to_string());
                 }
             }
         }
@@ -302,10 +302,10 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
         sum_pos += (max.1 - base).max(0.0);
         let label = |p: (f64, f64, &str)| format!("{} {}{}", short(p.0), format_value(p.1), p.2);
         bars.push(TornadoBar {
-            label: match (missing.is_empty(), metric.of_plunge) {
+            label: match (missing_values.is_empty(), metric.of_plunge) {
                 (true, _) => k.to_string(),
-                (false, true) => format!("{k} (none at {})", missing.join(", ")),
-                (false, false) => format!("{k} (not recorded at {})", missing.join(", ")),
+                (false, true) => format!("{k} (none at {})", missing_values.join(", ")),
+                (false, false) => format!("{k} (not recorded at {})", missing_values.join(", ")),
             },
             low: (min.1, label(min)),
             high: (max.1, label(max)),
@@ -316,7 +316,7 @@ pub fn band(rows: &[Row], metric: &Metric) -> Option<Band> {
         bars,
         one_at_a_time: (lo, hi),
         superposed: (base + sum_neg, base + sum_pos),
-        missing: without,
+        missing: missing_cases,
     })
 }
 
@@ -371,18 +371,18 @@ pub fn write(dir: &Path, hull: &str, fr: f64, rows: &[Row], crest_carried: &[usi
             inside.unwrap_or("–")
         );
         // Regression: a case whose crest was not recorded (no `eta.csv`) was listed as one without a plunge.
-        let note = if m.of_plunge { &mut no_plunge } else { &mut no_crest };
+        let (note, what) = match m.of_plunge {
+            true => (
+                &mut no_plunge,
+                "No plunge, so no plunge metric (left out of their bars)",
+            ),
+            false => (
+                &mut no_crest,
+                "No highest crest recorded (no `eta.csv`, none carried; left out of the crest bars)",
+            ),
+        };
         if !b.missing.is_empty() && note.is_empty() {
-            *note = match m.of_plunge {
-                true => format!(
-                    "\nNo plunge, so no plunge metric (left out of their bars): {}.\n",
-                    b.missing.join(", ")
-                ),
-                false => format!(
-                    "\nNo highest crest recorded (no `eta.csv`, none carried; left out of the crest bars): {}.\n",
-                    b.missing.join(", ")
-                ),
-            };
+            *note = format!("\n{what}: {}.\n", b.missing.join(", "));
         }
         let marks: Vec<(String, f64)> = pubv.map(|v| vec![(format!("published {v:.3}"), v)]).unwrap_or_default();
         let png = dir.join(format!("tornado_{}.png", m.key));
