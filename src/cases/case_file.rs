@@ -218,6 +218,10 @@ pub struct Numerics {
     /// the pairs a stage instead of two (`sph::main_loop::GradientStage`).
     #[serde(default)]
     pub gradient_stage: crate::sph::main_loop::GradientStage,
+    /// The form of the normal-flux walls' terms (`ghosts = "normal-flux"`): `shepard` (the default, divided by
+    /// the Shepard sum near the wall, De Leffe et al. 2009) or `thesis` (as printed in thesis §7.1.2).
+    #[serde(default)]
+    pub normal_flux: crate::sph::normal_flux::NormalFluxForm,
 }
 
 fn default_kernel_table() -> bool {
@@ -246,6 +250,7 @@ impl Default for Numerics {
             shifting: Default::default(),
             wall_slip: Default::default(),
             gradient_stage: Default::default(),
+            normal_flux: Default::default(),
         }
     }
 }

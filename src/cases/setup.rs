@@ -60,6 +60,7 @@ pub fn solver_config(case: &CaseFile, dx: f64) -> SolverConfig<2> {
     cfg.shifting = case.shifting();
     cfg.wall_slip = n.wall_slip;
     cfg.gradient_stage = n.gradient_stage;
+    cfg.normal_flux = n.normal_flux;
     cfg.multi_fluid = multi_fluid(case, &cfg.eos);
     cfg
 }

@@ -29,10 +29,16 @@ fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
     let ghosts = match name {
         "images" => Some(GhostKind::Images),
         "fixed-ghosts" => Some(GhostKind::Fixed),
+        "normal-flux" => Some(GhostKind::NormalFlux),
         _ => None,
     };
     if let Some(kind) = ghosts {
         case.set_ghosts(kind);
+        return Ok(());
+    }
+    if name == "normal-flux-thesis" {
+        case.set_ghosts(GhostKind::NormalFlux);
+        case.numerics.normal_flux = crate::sph::normal_flux::NormalFluxForm::Thesis;
         return Ok(());
     }
     let n = &mut case.numerics;

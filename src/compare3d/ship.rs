@@ -58,6 +58,10 @@ pub struct ShipTank {
     /// Particle shifting after each step: the solver's default (the near-wall band), or a study's 2D+t
     /// configuration's, so that both models of a case run the same method.
     pub shifting: crate::sph::particle_shifting::ParticleShifting,
+    /// The hull's wall: fixed ghosts on the lattice behind its surface (the default, thesis §7.1.1 carried to a
+    /// curved surface) or the normal-flux method on its surface points ([`GhostKind::NormalFlux`], §7.1.2, the
+    /// thesis's choice for its 3D hull); images are refused.
+    pub hull_wall: GhostKind,
 }
 
 /// The scene, built: the simulation (boundary 0 the tank, 1 the hull) and what its measures need.
@@ -87,6 +91,7 @@ impl ShipTank {
             motion: RigidMotion::Fixed,
             c0_over_sqrt_gd: 10.0,
             shifting: Default::default(),
+            hull_wall: GhostKind::Fixed,
         }
     }
 
@@ -181,6 +186,16 @@ impl ShipTank {
         )
         .map_err(anyhow::Error::msg)?
         .with_motion(self.motion);
+        let hull_wall = match self.hull_wall {
+            GhostKind::Fixed => hull_wall,
+            GhostKind::NormalFlux => hull_wall
+                .with_normal_flux(samples.iter().map(|p| p.area * l * l).collect())
+                .map_err(anyhow::Error::msg)?,
+            GhostKind::Images => anyhow::bail!(
+                "3D ship: the hull's wall takes fixed ghosts or normal-flux nodes, not images (those are for the \
+                 tank's flat faces)"
+            ),
+        };
         // Solid: the surface decides near it, the section polygon deeper inside.
         let polygons = |x: f64| section_polygon(&self.hull, x / l, 400);
         // `inside` (the polygon test) is asked only when the surface does not decide.

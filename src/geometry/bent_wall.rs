@@ -137,9 +137,12 @@ impl BentWall {
     /// carried on beyond (the 45° wall; ours, see [`crate::geometry::bent_wall`]). Normals point into the water.
     pub fn oriented_points(&self, ds: f64, x_from: f64, x_to: f64, top: f64) -> Vec<super::hull_solid::OrientedPoint> {
         let nx = (((x_to - x_from) / ds).ceil() as usize).max(1);
+        let xs: Vec<f64> = (0..=nx)
+            .map(|i| x_from + (x_to - x_from) * i as f64 / nx as f64)
+            .collect();
+        let wx = super::hull_solid::trapezoid_weights(&xs);
         let mut out = vec![];
-        for i in 0..=nx {
-            let x = x_from + (x_to - x_from) * i as f64 / nx as f64;
+        for (i, &x) in xs.iter().enumerate() {
             let s = ((x - X_START) / self.length).clamp(0.0, 1.0);
             let p = self.plate(s, 0.0);
             // The cut's length up to `top`, sampled evenly.
@@ -150,8 +153,9 @@ impl BentWall {
             // not developable: its normal turns along the cut, so each point takes its own.
             let u = 1.0 - s;
             let per_t = u + (1.0 - u) * A;
-            for k in 0..=nr {
-                let (q, _, _) = p.point(len * k as f64 / nr as f64);
+            let along: Vec<f64> = (0..=nr).map(|k| len * k as f64 / nr as f64).collect();
+            for (k, w) in super::hull_solid::trapezoid_weights(&along).iter().enumerate() {
+                let (q, _, _) = p.point(along[k]);
                 let normal = if straight {
                     let n2 = p.normal();
                     [0.0, n2.x, n2.y]
@@ -162,6 +166,7 @@ impl BentWall {
                 out.push(super::hull_solid::OrientedPoint {
                     pos: [x, q.x, q.y],
                     normal,
+                    area: super::hull_solid::patch_area(wx[i], *w, &normal),
                 });
             }
         }

@@ -1,4 +1,5 @@
-//! Solid boundaries as *fixed ghost particles* (thesis §7.1.1): the boundary supplies, at time t, the ghost
+//! Solid boundaries as *fixed ghost particles* (thesis §7.1.1) or as the nodes of a *normal-flux* surface
+//! (§7.1.2, [`FluxNodes`]). With ghosts the boundary supplies, at time t, the ghost
 //! positions, their interpolation (mirror) points inside the fluid and the wall velocity and acceleration
 //! there. The solver fills in the ghosts' velocity, pressure and density from the fluid by MLS
 //! ([`crate::sph::mls`], `crate::sph::equations::ghost_conditions`). This file knows nothing of hulls or file formats.
@@ -80,6 +81,43 @@ impl<const D: usize> GhostGeometry<D> {
     }
 }
 
+/// The nodes of a normal-flux wall at one instant (thesis §7.1.2): points of the solid surface, each standing
+/// for the patch of area `area` around it, where the boundary terms of eq. (7.14) are summed.
+#[derive(Clone, Debug, Default)]
+pub struct FluxNodes<const D: usize> {
+    pub pos: Vec<SVector<f64, D>>,
+    /// Unit normal out of the fluid, into the solid (n_k of eq. 7.14).
+    pub outward: Vec<SVector<f64, D>>,
+    /// The patch's area S_k (m^(D−1): a length in 2D).
+    pub area: Vec<f64>,
+    /// The wall's velocity (m/s) and acceleration (m/s²) at the node.
+    pub wall_vel: Vec<SVector<f64, D>>,
+    pub wall_acc: Vec<SVector<f64, D>>,
+}
+
+impl<const D: usize> FluxNodes<D> {
+    pub fn len(&self) -> usize {
+        self.pos.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.pos.is_empty()
+    }
+    pub fn clear(&mut self) {
+        self.pos.clear();
+        self.outward.clear();
+        self.area.clear();
+        self.wall_vel.clear();
+        self.wall_acc.clear();
+    }
+    pub fn append(&mut self, other: &FluxNodes<D>) {
+        self.pos.extend_from_slice(&other.pos);
+        self.outward.extend_from_slice(&other.outward);
+        self.area.extend_from_slice(&other.area);
+        self.wall_vel.extend_from_slice(&other.wall_vel);
+        self.wall_acc.extend_from_slice(&other.wall_acc);
+    }
+}
+
 /// How far behind a plane wall an image ghost can touch the fluid (m): a pair on either side of the plane is at
 /// least as far apart as the sum of its two distances to the plane, so an image deeper than the support less the
 /// smallest signed distance of any fluid particle to the plane (`nearest`, on the fluid side positive) is outside
@@ -103,6 +141,9 @@ pub trait Boundary<const D: usize>: Send + Sync {
     /// of each image's fluid particle appended to `source`. The image's mirror point (`interp`) is its
     /// particle. Walls with fixed ghosts only write none (the default).
     fn images(&self, _t: f64, _pos: &[SVector<f64, D>], _out: &mut GhostGeometry<D>, _source: &mut Vec<usize>) {}
+    /// The wall's normal-flux nodes at time `t` (thesis §7.1.2), appended to `out`: a wall held by boundary
+    /// terms on its surface rather than by ghosts. Walls of ghosts write none (the default).
+    fn flux_nodes(&self, _t: f64, _out: &mut FluxNodes<D>) {}
     /// Safeguard against wall penetration: if `x` lies on the solid side of the boundary at time `t`
     /// (within the kernel support of the wall), move it back to the fluid side, remove its normal velocity
     /// relative to the wall, and return true. The solver counts these corrections and reports them.

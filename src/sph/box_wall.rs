@@ -10,8 +10,8 @@
 //! ghosts are those of the rectangular polyline tank, mirror for mirror (test
 //! `two_dimensional_box_has_the_ghosts_of_the_rectangular_polyline_tank`).
 
-use super::boundary::{image_reach, Boundary, GhostGeometry, Mirror};
-use super::polyline_wall::GhostKind;
+use super::boundary::{image_reach, Boundary, FluxNodes, GhostGeometry, Mirror};
+use super::polyline_wall::{GhostKind, FLUX_NODES_PER_DX};
 use nalgebra::SVector;
 
 /// A still, axis-aligned tank [lo, hi] (m), open at the top (the upper side of the last axis).
@@ -24,6 +24,8 @@ pub struct BoxWall<const D: usize> {
     support: f64,
     kind: GhostKind,
     base: GhostGeometry<D>,
+    /// With [`GhostKind::NormalFlux`], the faces' nodes; none otherwise.
+    nodes: FluxNodes<D>,
 }
 
 impl<const D: usize> BoxWall<D> {
@@ -57,6 +59,7 @@ impl<const D: usize> BoxWall<D> {
             support,
             kind: GhostKind::Fixed,
             base,
+            nodes: FluxNodes::default(),
         })
     }
 
@@ -65,8 +68,13 @@ impl<const D: usize> BoxWall<D> {
     /// stay fixed.
     pub fn with_ghosts(mut self, kind: GhostKind) -> Self {
         self.kind = kind;
-        if kind == GhostKind::Images {
-            self.base = self.base.filtered(|k| self.base.mirror[k] != Mirror::Plane);
+        match kind {
+            GhostKind::Images => self.base = self.base.filtered(|k| self.base.mirror[k] != Mirror::Plane),
+            GhostKind::NormalFlux => {
+                self.base = GhostGeometry::default();
+                self.nodes = self.face_nodes();
+            }
+            GhostKind::Fixed => {}
         }
         self
     }
@@ -153,6 +161,65 @@ fn lattice_ghosts<const D: usize>(
     g
 }
 
+impl<const D: usize> BoxWall<D> {
+    /// The normal-flux nodes of the faces (the open top has none): each face cut into cells of
+    /// ds / [`FLUX_NODES_PER_DX`] along its other axes, a node at each cell's centre with the cell's area.
+    fn face_nodes(&self) -> FluxNodes<D> {
+        let mut out = FluxNodes::default();
+        for k in 0..D {
+            for upper in [false, true] {
+                if upper && k == D - 1 {
+                    continue; // the open top
+                }
+                let mut outward = SVector::<f64, D>::zeros();
+                outward[k] = if upper { 1.0 } else { -1.0 };
+                let axes: Vec<usize> = (0..D).filter(|&a| a != k).collect();
+                let cells: Vec<usize> = axes
+                    .iter()
+                    .map(|&a| {
+                        ((self.hi[a] - self.lo[a]) * FLUX_NODES_PER_DX / self.ds)
+                            .round()
+                            .max(1.0) as usize
+                    })
+                    .collect();
+                let size: Vec<f64> = axes
+                    .iter()
+                    .zip(&cells)
+                    .map(|(&a, &m)| (self.hi[a] - self.lo[a]) / m as f64)
+                    .collect();
+                let area: f64 = size.iter().product();
+                let mut idx = vec![0usize; axes.len()];
+                loop {
+                    let mut x = SVector::<f64, D>::zeros();
+                    x[k] = if upper { self.hi[k] } else { self.lo[k] };
+                    for (b, &a) in axes.iter().enumerate() {
+                        x[a] = self.lo[a] + (idx[b] as f64 + 0.5) * size[b];
+                    }
+                    out.pos.push(x);
+                    out.outward.push(outward);
+                    out.area.push(area);
+                    out.wall_vel.push(SVector::zeros());
+                    out.wall_acc.push(SVector::zeros());
+                    // The next cell, odometer-wise; done when every axis has wrapped.
+                    let mut b = 0;
+                    while b < idx.len() {
+                        idx[b] += 1;
+                        if idx[b] < cells[b] {
+                            break;
+                        }
+                        idx[b] = 0;
+                        b += 1;
+                    }
+                    if b == idx.len() {
+                        break;
+                    }
+                }
+            }
+        }
+        out
+    }
+}
+
 impl<const D: usize> Boundary<D> for BoxWall<D> {
     fn name(&self) -> &str {
         &self.name
@@ -162,6 +229,9 @@ impl<const D: usize> Boundary<D> for BoxWall<D> {
     }
     fn ghosts(&self, _t: f64, out: &mut GhostGeometry<D>) {
         out.append(&self.base);
+    }
+    fn flux_nodes(&self, _t: f64, out: &mut FluxNodes<D>) {
+        out.append(&self.nodes);
     }
     /// With [`GhostKind::Images`]: every particle within the support of a wall face, over that face (inside
     /// the tank along the other axes, so not above the side walls' top), gets its image through the face, if
@@ -229,6 +299,40 @@ mod tests {
     use super::*;
     use crate::sph::polyline_wall::{ghost_layers, FluidSide};
     use nalgebra::{Vector2, Vector3};
+
+    /// A normal-flux box has no ghosts and nodes that tile its closed faces: each face's areas add up to the
+    /// face's, its normals point out of the water, and the open top has none.
+    #[test]
+    fn normal_flux_box_nodes_tile_its_faces_with_outward_normals() {
+        let (dx, support) = (0.1, 0.399);
+        let (lo, hi) = (Vector3::new(0.0, 0.0, 0.0), Vector3::new(0.6, 0.4, 0.3));
+        let b = BoxWall::new("tank", lo, hi, dx, support)
+            .unwrap()
+            .with_ghosts(GhostKind::NormalFlux);
+        let (mut ghosts, mut nodes) = (GhostGeometry::default(), FluxNodes::default());
+        b.ghosts(0.0, &mut ghosts);
+        b.flux_nodes(0.0, &mut nodes);
+        assert!(ghosts.is_empty());
+        let centre = (lo + hi) * 0.5;
+        let mut area = [[0.0; 2]; 3];
+        for k in 0..nodes.len() {
+            let n = nodes.outward[k];
+            let axis = n.iamax();
+            assert!((n.norm() - 1.0).abs() < 1e-15 && n[axis].abs() == 1.0);
+            assert!(
+                (nodes.pos[k] - centre).dot(&n) > 0.0,
+                "normal into the water at {:?}",
+                nodes.pos[k]
+            );
+            area[axis][usize::from(n[axis] > 0.0)] += nodes.area[k];
+        }
+        let face = |a: usize| (0..3).filter(|&b| b != a).map(|b| hi[b] - lo[b]).product::<f64>();
+        for (a, sides) in area.iter().enumerate() {
+            assert!((sides[0] - face(a)).abs() < 1e-12, "axis {a}: {sides:?}");
+            let top = if a == 2 { 0.0 } else { face(a) };
+            assert!((sides[1] - top).abs() < 1e-12, "axis {a}: {sides:?}");
+        }
+    }
 
     #[test]
     fn two_dimensional_box_has_the_ghosts_of_the_rectangular_polyline_tank() {

@@ -16,6 +16,7 @@ pub mod main_loop;
 pub mod mls;
 pub mod multi_fluid;
 pub mod neighbours;
+pub mod normal_flux;
 pub mod packing;
 pub mod particle_shifting;
 pub mod particles;

@@ -34,6 +34,7 @@ use super::main_loop::{GradientStage, MainLoop};
 use super::mls::{mls_fit, MlsFit};
 use super::multi_fluid::{self, MultiFluid, ShepardDensity, StateDensity};
 use super::neighbours::CellList;
+use super::normal_flux::{FluidStage, FluxWalls, NormalFluxForm};
 use super::particle_shifting::{self, ParticleShifting, ShiftRegion};
 use super::particles::Fluid;
 use super::wall_sensor::{SensorRecord, WallSensor};
@@ -87,6 +88,9 @@ pub struct SolverConfig<const D: usize> {
     /// Which state the δ-term's ⟨∇ρ⟩^L is taken at in each stage of a step: its own (the default, the
     /// thesis's) or, after the first stage, the previous stage's ([`GradientStage`]).
     pub gradient_stage: GradientStage,
+    /// The form of the normal-flux walls' terms (thesis §7.1.2), for boundaries that have nodes: divided by the
+    /// Shepard sum near the wall (the default) or as printed ([`NormalFluxForm`]).
+    pub normal_flux: NormalFluxForm,
 }
 
 /// Interpolation of the fluid at the ghosts' mirror points.
@@ -129,6 +133,7 @@ impl<const D: usize> SolverConfig<D> {
             wall_slip: WallSlip::FreeSlip,
             multi_fluid: None,
             gradient_stage: GradientStage::Own,
+            normal_flux: NormalFluxForm::Shepard,
         }
     }
 }
@@ -364,6 +369,8 @@ pub struct Simulation<const D: usize> {
     /// Neighbours (fluid and ghost indices) of each fluid particle at the current stage.
     neighbours: Vec<Vec<u32>>,
     ghosts_static: bool,
+    /// The nodes of the normal-flux walls (thesis §7.1.2) at the current stage; none with ghosts only.
+    flux: FluxWalls<D>,
     /// The tabulated gradient factor when `cfg.kernel_table` is set (and the kernel is tabulated).
     grad_table: Option<GradientTable>,
     /// Wall pressure sensors read at the start of every step ([`super::wall_sensor`]).
@@ -406,11 +413,17 @@ impl<const D: usize> Simulation<D> {
             grad_rho: vec![],
             neighbours: vec![],
             ghosts_static: false,
+            flux: FluxWalls::default(),
             grad_table,
             sensors: vec![],
             sensor_record: SensorRecord::default(),
         };
         sim.place_ghosts(0.0);
+        // As above, refused before this where a user can ask for it.
+        assert!(
+            sim.cfg.multi_fluid.as_ref().is_none_or(|m| m.phases.len() < 2) || sim.flux.is_empty(),
+            "several phases need walls of ghosts (the normal-flux terms are single phase)"
+        );
         sim.ghosts_static = !sim.boundaries.iter().any(|b| b.moves());
         sim
     }
@@ -457,6 +470,7 @@ impl<const D: usize> Simulation<D> {
             g.geom.append(&tmp);
         }
         g.n_fixed = g.geom.len();
+        self.flux.place(&self.boundaries, t, self.kernel.support);
     }
 
     /// Replaces the image ghosts by those of the fluid at `pos` (after the fixed ones).
@@ -691,8 +705,7 @@ impl<const D: usize> Simulation<D> {
                 .main_loop(pos, vel, rho)
                 .with_next_gradient(&self.cells, self.kernel.support);
             self.grad_rho = grad;
-            self.timings.main_loop += clock.elapsed().as_secs_f64();
-            return Rates::from_gather(gathered);
+            return self.finish_rates(gathered, pos, vel, rho, clock);
         }
         self.neighbours.resize_with(nf, Vec::new);
         let pass = GradientPass {
@@ -738,12 +751,44 @@ impl<const D: usize> Simulation<D> {
                 gradient: gf,
                 h,
             };
-            let rates = Rates::from_gather(multi_fluid::rates(mf, cfg, &stage));
-            self.timings.main_loop += clock.elapsed().as_secs_f64();
-            return rates;
+            let gathered = multi_fluid::rates(mf, cfg, &stage);
+            return self.finish_rates(gathered, pos, vel, rho, clock);
         }
         // Stage 5: continuity and momentum, eq. (5.1).
-        let rates = Rates::from_gather(self.main_loop(pos, vel, rho).over_lists(&self.neighbours));
+        let gathered = self.main_loop(pos, vel, rho).over_lists(&self.neighbours);
+        self.finish_rates(gathered, pos, vel, rho, clock)
+    }
+
+    /// The end of stage 5: the normal-flux walls' boundary terms (eq. 7.14) added to the gather's rates, which
+    /// the clock started at the main loop's start.
+    fn finish_rates(
+        &mut self,
+        mut gathered: Gathered<D>,
+        pos: &[SVector<f64, D>],
+        vel: &[SVector<f64, D>],
+        rho: &[f64],
+        clock: Instant,
+    ) -> Rates<D> {
+        let stage = FluidStage {
+            pos,
+            vel,
+            rho,
+            pressure: &self.pressure,
+            volume: &self.volume,
+            cells: &self.cells,
+            all_pos: &self.all_pos,
+            ghosts: &self.ghosts,
+        };
+        let cfg = &self.cfg;
+        self.flux.add_terms(
+            &self.kernel,
+            cfg.eos.c0,
+            cfg.body_force,
+            cfg.normal_flux,
+            &stage,
+            &mut gathered,
+        );
+        let rates = Rates::from_gather(gathered);
         self.timings.main_loop += clock.elapsed().as_secs_f64();
         rates
     }
@@ -1048,6 +1093,23 @@ impl<const D: usize> Simulation<D> {
         for (g, f) in per_ghost.iter().enumerate() {
             out[gs.owner[g]] += f;
         }
+        if !self.flux.is_empty() {
+            let stage = FluidStage {
+                pos: &fl.pos,
+                vel: &fl.vel,
+                rho: &fl.rho,
+                pressure: p,
+                volume: &self.volume,
+                cells: &self.cells,
+                all_pos: &self.all_pos,
+                ghosts: &self.ghosts,
+            };
+            let (c0, body) = (self.cfg.eos.c0, self.cfg.body_force);
+            let through_nodes = self.flux.forces(&kernel, c0, body, &stage, self.boundaries.len());
+            for (o, f) in out.iter_mut().zip(through_nodes) {
+                *o += f;
+            }
+        }
         out
     }
 
@@ -1315,6 +1377,79 @@ mod tests {
     use crate::sph::box_wall::BoxWall;
     use crate::sph::polyline_wall::GhostKind;
     use nalgebra::Vector2;
+
+    /// The hydrostatic start in a tank of normal-flux walls (thesis §7.1.2): the rates of its particles, and their
+    /// Shepard sums Γ.
+    fn normal_flux_tank_rates(form: NormalFluxForm) -> (Vec<SVector<f64, 2>>, Vec<SVector<f64, 2>>, Vec<f64>) {
+        use crate::sph::boundary::RigidMotion;
+        use crate::sph::polyline_wall::{FluidSide, PolylineWall};
+        let (dx, g, depth) = (0.05, 9.81, 0.5);
+        let mut cfg = SolverConfig::new(dx, 1000.0, 22.0, BodyForce::Uniform(Vector2::new(0.0, -g)));
+        cfg.normal_flux = form;
+        let support = cfg.kernel.support_over_h() * cfg.h;
+        let points = vec![
+            Vector2::new(0.0, 0.8),
+            Vector2::zeros(),
+            Vector2::new(1.0, 0.0),
+            Vector2::new(1.0, 0.8),
+        ];
+        let wall = PolylineWall::new("tank", points, FluidSide::Left, RigidMotion::Fixed, dx, support)
+            .with_ghosts(GhostKind::NormalFlux);
+        let mut fluid = Fluid::default();
+        for i in 0..20 {
+            for k in 0..10 {
+                let x = Vector2::new((i as f64 + 0.5) * dx, (k as f64 + 0.5) * dx);
+                let rho = cfg.eos.density(1000.0 * g * (depth - x.y));
+                fluid.push(x, Vector2::zeros(), rho, rho * dx * dx, 0.0);
+            }
+        }
+        let mut sim = Simulation::new(cfg, fluid, vec![Box::new(wall)]);
+        assert!(sim.ghosts.geom.is_empty() && !sim.flux.is_empty());
+        let (pos, vel, rho) = (sim.fluid.pos.clone(), sim.fluid.vel.clone(), sim.fluid.rho.clone());
+        let rates = sim.rates(0.0, &pos, &vel, &rho, true);
+        let gamma = pos
+            .iter()
+            .map(|x| {
+                let mut s = 0.0;
+                sim.cells
+                    .for_each_below_within(&sim.all_pos, x, sim.kernel.support, pos.len(), |j, _, r| {
+                        s += sim.kernel.w(r) * sim.volume[j]
+                    });
+                s
+            })
+            .collect();
+        (pos, rates.dvel, gamma)
+    }
+
+    /// Beside a vertical normal-flux wall, away from the floor and the free surface (3 rows each), the
+    /// hydrostatic pressure holds the water up only in proportion to the kernel's share inside the fluid: as
+    /// printed (§7.1.2) a particle on the wall falls at (1 − Γ) g, Γ its Shepard sum, since the wall's terms
+    /// act along its normal only; divided by Γ (De Leffe et al. 2009; [`NormalFluxForm::Shepard`]) the fall
+    /// is gone (below 0.05 g; 0.017 g measured).
+    #[test]
+    fn hydrostatic_water_beside_a_normal_flux_wall_falls_unless_divided_by_the_shepard_sum() {
+        let (g, dx) = (9.81, 0.05);
+        let beside = |x: &SVector<f64, 2>| x.x < 0.5 * dx + 1e-9 && x.y < 0.5 - 3.0 * dx && x.y > 3.0 * dx;
+        let (pos, dvel, gamma) = normal_flux_tank_rates(NormalFluxForm::Thesis);
+        let mut n = 0;
+        for ((x, a), gm) in pos.iter().zip(&dvel).zip(&gamma) {
+            if beside(x) {
+                n += 1;
+                let fall = -(1.0 - gm) * g;
+                assert!(
+                    (a.y - fall).abs() < 0.1 * g,
+                    "thesis form at {x:?}: {} against {fall}",
+                    a.y
+                );
+                assert!(*gm < 0.75, "Γ {gm}");
+            }
+        }
+        assert!(n >= 3);
+        let (pos, dvel, _) = normal_flux_tank_rates(NormalFluxForm::Shepard);
+        for (x, a) in pos.iter().zip(&dvel).filter(|(x, _)| beside(x)) {
+            assert!(a.y.abs() < 0.05 * g, "divided form at {x:?}: {} g", a.y / g);
+        }
+    }
 
     /// An image ghost's density gradient is its particle's renormalised one along the wall and the Neumann
     /// condition's dρ/dn = (dρ/dp) ρ g·n across it: the image carries its particle's values, the gradient too.

@@ -12,7 +12,7 @@
 //! symmetry plane (a tie broken by index once classified a node below a keel as solid on one side only).
 //! Knows nothing of hulls.
 
-use super::boundary::{Boundary, GhostGeometry, Mirror, RigidMotion};
+use super::boundary::{Boundary, FluxNodes, GhostGeometry, Mirror, RigidMotion};
 use nalgebra::Vector3;
 use std::collections::HashMap;
 
@@ -35,6 +35,9 @@ pub struct SurfaceWall {
     base: GhostGeometry<3>,
     /// The wall's translation (a towed hull); still by default.
     motion: RigidMotion<3>,
+    /// With [`SurfaceWall::with_normal_flux`], the samples as the nodes of a normal-flux wall at t = 0; none
+    /// otherwise.
+    nodes: FluxNodes<3>,
 }
 
 impl SurfaceWall {
@@ -83,6 +86,7 @@ impl SurfaceWall {
             hi,
             base: GhostGeometry::default(),
             motion: RigidMotion::Fixed,
+            nodes: FluxNodes::default(),
         };
         let first = |a: usize| ((lo[a] - support - origin[a]) / ds - 0.5).floor() as i64;
         let last = |a: usize| ((hi[a] + support - origin[a]) / ds - 0.5).ceil() as i64;
@@ -128,6 +132,29 @@ impl SurfaceWall {
 
     /// The same wall translating with `motion` (its ghosts carried along, each with the wall's velocity and
     /// acceleration; off the fluid's lattice once it moves, as the 2D+t section's are).
+    /// The same surface as a normal-flux wall (thesis §7.1.2): no ghosts, its samples the nodes, `areas` (m²)
+    /// the patch of surface each stands for. The samples still decide which side of the wall a point is on
+    /// ([`SurfaceWall::signed_distance`], [`Boundary::keep_out`]).
+    pub fn with_normal_flux(mut self, areas: Vec<f64>) -> Result<Self, String> {
+        if areas.len() != self.points.len() || areas.iter().any(|a| !(a.is_finite() && *a >= 0.0)) {
+            return Err(format!(
+                "surface wall '{}': {} areas for {} points, expected one finite area ≥ 0 per point",
+                self.name,
+                areas.len(),
+                self.points.len()
+            ));
+        }
+        self.base = GhostGeometry::default();
+        self.nodes = FluxNodes {
+            pos: self.points.clone(),
+            outward: self.normals.iter().map(|n| -n).collect(),
+            wall_vel: vec![V3::zeros(); areas.len()],
+            wall_acc: vec![V3::zeros(); areas.len()],
+            area: areas,
+        };
+        Ok(self)
+    }
+
     pub fn with_motion(mut self, motion: RigidMotion<3>) -> Self {
         self.motion = motion;
         self
@@ -217,6 +244,22 @@ impl Boundary<3> for SurfaceWall {
     }
     /// A particle found on the solid side is put back on the fluid side, a quarter spacing off the tangent
     /// plane, its velocity into the wall removed.
+    fn flux_nodes(&self, t: f64, out: &mut FluxNodes<3>) {
+        let n = out.len();
+        out.append(&self.nodes);
+        if self.moves() {
+            let (s, v, a) = (
+                self.motion.displacement(t),
+                self.motion.velocity(t),
+                self.motion.acceleration(t),
+            );
+            for k in n..out.len() {
+                out.pos[k] += s;
+                out.wall_vel[k] = v;
+                out.wall_acc[k] = a;
+            }
+        }
+    }
     fn keep_out(&self, t: f64, x: &mut V3, u: &mut V3) -> bool {
         let Some((d, n)) = self.signed_distance_at(t, x) else {
             return false;

@@ -33,6 +33,7 @@ pub const SENSOR_DEPTHS: [f64; 3] = [0.25, 0.5, 0.75];
 pub struct HullAtRest {
     /// D/dx.
     pub res: f64,
+    /// As asked of [`hull_at_rest`]: `NormalFlux` for the normal-flux hull in a tank of images.
     pub tank_ghosts: GhostKind,
     /// E_K/(M g D) at the end.
     pub kinetic: f64,
@@ -56,7 +57,9 @@ pub fn wigley() -> HullSurface {
     HullSurface::new(&crate::geometry::wigley::wigley(&Default::default()))
 }
 
-/// Runs the Wigley hull at rest at D/dx = `res` to t√(g/D) = `end`, the tank's faces made of `tank_ghosts`,
+/// Runs the Wigley hull at rest at D/dx = `res` to t√(g/D) = `end`, the tank's faces made of `tank_ghosts`
+/// (fixed or images, the hull of fixed ghosts; or [`GhostKind::NormalFlux`]: the hull a normal-flux wall, the
+/// tank's faces images, the 3D tank's better-measured faces),
 /// and measures it.
 pub fn hull_at_rest(
     res: f64,
@@ -71,7 +74,12 @@ pub fn hull_at_rest(
     let hull = wigley();
     let d_over_l = hull.meta.draft_m / hull.meta.length_m;
     let mut tank = ShipTank::new(hull.clone(), d_over_l / res, 0.25, 0.25);
-    tank.tank_ghosts = tank_ghosts;
+    if tank_ghosts == GhostKind::NormalFlux {
+        tank.tank_ghosts = GhostKind::Images;
+        tank.hull_wall = GhostKind::NormalFlux;
+    } else {
+        tank.tank_ghosts = tank_ghosts;
+    }
     let scene = tank.build()?;
     let (d, g, rho0) = (scene.draft, 9.81, scene.sim.cfg.eos.rho0);
     let eos = scene.sim.cfg.eos;
@@ -169,10 +177,10 @@ impl HullAtRest {
         let case = format!(
             "hull-at-rest (Wigley, D/dx {:.0}{})",
             self.res,
-            if self.tank_ghosts == GhostKind::Images {
-                ", images"
-            } else {
-                ""
+            match self.tank_ghosts {
+                GhostKind::Images => ", images",
+                GhostKind::NormalFlux => ", normal-flux hull",
+                GhostKind::Fixed => "",
             }
         );
         let mut out = vec![Check {

@@ -29,8 +29,10 @@ pub struct RunArgs {
     #[arg(long, short)]
     pub quiet: bool,
     /// Ghosts of every wall's straight sides, overriding the case file: `fixed` (a lattice valued by MLS at
-    /// the mirror points, thesis §7.1.1) or `images` (mirror images of the fluid particles, Colagrossi &
-    /// Landrini 2003; corners keep fixed ghosts). Default: the case's (fixed unless it says otherwise).
+    /// the mirror points, thesis §7.1.1), `images` (mirror images of the fluid particles, Colagrossi &
+    /// Landrini 2003; corners keep fixed ghosts) or `normal-flux` (no ghosts: boundary terms on the wall's
+    /// surface, thesis §7.1.2 divided by the Shepard sum, free slip, single phase). Default: the case's (fixed
+    /// unless it says otherwise).
     #[arg(long, value_enum)]
     pub ghosts: Option<GhostsArg>,
     /// Particle shifting after each step, overriding the case file: `sun2017-walls` (the δ⁺-SPH shift of Sun et

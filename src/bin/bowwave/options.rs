@@ -5,6 +5,7 @@
 pub enum GhostsArg {
     Fixed,
     Images,
+    NormalFlux,
 }
 
 impl From<GhostsArg> for bowwave::sph::polyline_wall::GhostKind {
@@ -12,6 +13,7 @@ impl From<GhostsArg> for bowwave::sph::polyline_wall::GhostKind {
         match g {
             GhostsArg::Fixed => Self::Fixed,
             GhostsArg::Images => Self::Images,
+            GhostsArg::NormalFlux => Self::NormalFlux,
         }
     }
 }

@@ -5,6 +5,7 @@ pub mod continuity;
 pub mod density_diffusion;
 pub mod ghost_conditions;
 pub mod interface_repulsion;
+pub mod normal_flux;
 pub mod pressure_force;
 pub mod renormalization;
 pub mod timestep;
