@@ -124,6 +124,22 @@ fn bad_phases_name_the_field() {
 /// two-layer tank's floor 0.49 ρ_w g H off, the 2D+t still tank with air stirred to E_K/(MgD) 1.9e-4). It is
 /// refused wherever it can be asked for: a case file (above), `--shifting` on a case with phases, and a 2D+t
 /// run with an air layer.
+/// A normal-flux wall in a case with several phases is refused by name before anything runs (its terms are
+/// single phase; the solver would otherwise stop on its own assertion).
+#[test]
+fn normal_flux_walls_with_several_phases_are_refused() {
+    let mut case = cases::load("two-layer").unwrap();
+    case.set_ghosts(bowwave::sph::polyline_wall::GhostKind::NormalFlux);
+    let e = match run(&case, &RunOptions::default()) {
+        Err(e) => e.to_string(),
+        Ok(_) => panic!("a two-phase case with normal-flux walls ran"),
+    };
+    assert!(
+        e.contains("walls[0].ghosts") && e.contains("two-layer") && e.contains("phases"),
+        "{e}"
+    );
+}
+
 #[test]
 fn particle_shifting_with_several_phases_is_refused() {
     use bowwave::cases::overrides::CaseOverrides;

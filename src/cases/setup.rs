@@ -3,6 +3,7 @@
 
 use super::case_file::{BlockSpec, BodyForceSpec, CaseFile, CutSide, PressureSpec};
 use crate::sph::multi_fluid::{equal_stiffness_sound_speed, MultiFluid, Phase};
+use crate::sph::polyline_wall::GhostKind;
 use crate::sph::{
     body_force::BodyForce,
     boundary::{Boundary, RigidMotion},
@@ -319,6 +320,15 @@ pub fn build(case: &CaseFile, res: Option<f64>) -> anyhow::Result<Simulation<2>>
     let cfg = solver_config(case, dx);
     let support = cfg.kernel.support_over_h() * cfg.h;
     check_size(case, dx, support)?;
+    if !case.phases.is_empty() {
+        if let Some(k) = case.walls.iter().position(|w| w.ghosts == GhostKind::NormalFlux) {
+            anyhow::bail!(
+                "case `{}`: walls[{k}].ghosts is `normal-flux`, but the case has `[[phases]]`; expected `fixed` or \
+                 `images` (the normal-flux terms are single phase)",
+                case.name
+            );
+        }
+    }
     let phase_eos = cfg.multi_fluid.as_ref().map_or(vec![cfg.eos], |m| m.eoses());
     let fl = fluid(case, dx, &phase_eos, &cfg.body_force);
     let laws = super::wall_motion::laws(case)?;

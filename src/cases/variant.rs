@@ -68,7 +68,7 @@ fn apply_one_variant(case: &mut CaseFile, name: &str) -> anyhow::Result<()> {
         other => {
             let (k, v) = other.split_once('=').ok_or_else(|| {
                 anyhow::anyhow!(
-                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, images, fixed-ghosts, alpha=A, delta=D, cfl=C or h=H (h/dx)"
+                    "variant `{other}`: expected delta-sph, molteni, wcsph, wendland, pc, rk4, table, exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, images, fixed-ghosts, normal-flux, normal-flux-thesis, alpha=A, delta=D, cfl=C or h=H (h/dx)"
                 )
             })?;
             let x: f64 = v

@@ -158,8 +158,9 @@ impl<const D: usize> FluxWalls<D> {
 
     /// Force of the fluid on each of `n_boundaries` boundaries through its nodes (N; N per unit depth in 2D):
     /// Σ_k p̄_k n_k S_k, the wall pressure integrated over the wetted nodes, p̄_k the Shepard average over the
-    /// fluid within the support of node k of each particle's eq. (7.20) estimate (a node with no fluid within
-    /// its support is dry). Not the reaction of the boundary terms: with [`NormalFluxForm::Shepard`] the fluid's
+    /// fluid within the support of node k and in front of its tangent plane of each particle's eq. (7.20)
+    /// estimate (a node with no such fluid is dry; the water behind a thin wall, or a hull's mirrored side
+    /// across a symmetry plane, is not its). Not the reaction of the boundary terms: with [`NormalFluxForm::Shepard`] the fluid's
     /// own pairs no longer cancel near the wall, and the reaction would miss the weight of a still tank by a
     /// third. Per-node gathers, summed per boundary in node order.
     pub fn forces(
@@ -178,6 +179,9 @@ impl<const D: usize> FluxWalls<D> {
                 let (mut sum, mut weight) = (0.0, 0.0);
                 f.cells
                     .for_each_below_within(f.all_pos, &self.nodes.pos[k], kernel.support, nf, |i, r_ki, r| {
+                        if r_ki.dot(&node.outward) < 0.0 {
+                            return; // behind the node's tangent plane: the water on the wall's other side
+                        }
                         let g = body.acceleration(&f.pos[i]);
                         let p_k = wall_pressure(f.pressure[i], f.rho[i], &f.vel[i], &-r_ki, &node, &g, c0);
                         let wv = kernel.w(r) * f.volume[i];

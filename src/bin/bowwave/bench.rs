@@ -57,7 +57,7 @@ pub struct BenchOneArgs {
     #[arg(long, default_value_t = 30)]
     pub steps: u64,
     /// Method variant, as in `bench --variants`: delta-sph, molteni, wcsph, wendland, pc, rk4, table,
-    /// exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, images, fixed-ghosts, or alpha=A, delta=D, cfl=C,
+    /// exact-kernel, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, images, fixed-ghosts, normal-flux, normal-flux-thesis, or alpha=A, delta=D, cfl=C,
     /// h=H; `+` combines them.
     #[arg(long, default_value = "delta-sph")]
     pub variant: String,

@@ -55,7 +55,7 @@ pub struct RunArgs {
     pub wall_slip: Option<WallSlip>,
     /// A method variant applied to the case before the options above, by the names of `chart speed-accuracy
     /// --variants`: delta-sph, molteni, wcsph, wendland (Wendland C2 at h = 2 dx), pc, rk4, table, exact-kernel,
-    /// images, fixed-ghosts, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, alpha=A, delta=D, cfl=C, h=H
+    /// images, fixed-ghosts, normal-flux, normal-flux-thesis, sun2017, sun2017-walls, sun2017-leaving, no-shifting, lagged-gradient, alpha=A, delta=D, cfl=C, h=H
     /// (h/dx), joined by `+` to combine (e.g. `wendland+h=1.4`: Wendland C2 with a 2.8 dx support, half the Gaussian's neighbours).
     #[arg(long)]
     pub variant: Option<String>,
