@@ -1,6 +1,7 @@
 //! The normal-flux walls of a simulation (thesis §7.1.2): every boundary's surface nodes at the current stage, and
 //! the two gathers that use them, the boundary terms of eq. (7.14) added to each fluid particle's rates after the
-//! main loop, and the force of the fluid on each wall (the reaction of those terms). The terms themselves are in
+//! main loop, and the force of the fluid on each wall (its wall pressure integrated over the nodes). The terms
+//! themselves are in
 //! [`super::equations::normal_flux`]. A simulation whose walls are all ghosts has no nodes and pays nothing.
 
 use super::body_force::BodyForce;
@@ -89,7 +90,8 @@ impl<const D: usize> FluxWalls<D> {
     /// Adds the boundary terms of eq. (7.14) to the main loop's rates: a gather over the nodes within each
     /// particle's support, in the cell list's order (the same bits for any thread count). With
     /// [`NormalFluxForm::Shepard`] a particle that has nodes in its support has its divergence and pressure
-    /// gradient, the fluid's part (summed again here, over the fluid alone) and the wall's, divided by Γ_i.
+    /// gradient, the fluid's part (summed again here, with the exact kernel gradient, over the fluid and the
+    /// other walls' ghosts) and the wall's, divided by Γ_i.
     pub fn add_terms(
         &self,
         kernel: &Kernel<D>,
@@ -129,10 +131,9 @@ impl<const D: usize> FluxWalls<D> {
                         *dvel += wall_dvel;
                     }
                     NormalFluxForm::Shepard => {
-                        // The gather holds the fluid's divergence and pressure sums once: summed again here, they
-                        // and the wall's become 1/Γ_i of them.
-                        // Over the fluid and the other walls' ghosts, which stand for the fluid beyond them (a
-                        // symmetry plane's).
+                        // The gather holds the fluid's divergence and pressure sums once: summed again here (over
+                        // the fluid and the other walls' ghosts, which stand for the fluid beyond them, a symmetry
+                        // plane's), they and the wall's become 1/Γ_i of them.
                         let (mut gamma, mut div, mut grad) = (0.0, 0.0, SVector::<f64, D>::zeros());
                         f.cells.for_each_within(f.all_pos, &x, kernel.support, |j, rij, r| {
                             let (u_j, p_j, v_j) = if j < nf {

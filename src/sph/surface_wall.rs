@@ -155,6 +155,18 @@ impl SurfaceWall {
         Ok(self)
     }
 
+    /// The displacement, velocity and acceleration (m, m/s, m/s²) the wall carries its ghosts or nodes with
+    /// at time t; `None` for a still wall.
+    fn carried(&self, t: f64) -> Option<(V3, V3, V3)> {
+        self.moves().then(|| {
+            (
+                self.motion.displacement(t),
+                self.motion.velocity(t),
+                self.motion.acceleration(t),
+            )
+        })
+    }
+
     pub fn with_motion(mut self, motion: RigidMotion<3>) -> Self {
         self.motion = motion;
         self
@@ -228,12 +240,7 @@ impl Boundary<3> for SurfaceWall {
     fn ghosts(&self, t: f64, out: &mut GhostGeometry<3>) {
         let n = out.len();
         out.append(&self.base);
-        if self.moves() {
-            let (s, v, a) = (
-                self.motion.displacement(t),
-                self.motion.velocity(t),
-                self.motion.acceleration(t),
-            );
+        if let Some((s, v, a)) = self.carried(t) {
             for k in n..out.len() {
                 out.pos[k] += s;
                 out.interp[k] += s;
@@ -242,17 +249,10 @@ impl Boundary<3> for SurfaceWall {
             }
         }
     }
-    /// A particle found on the solid side is put back on the fluid side, a quarter spacing off the tangent
-    /// plane, its velocity into the wall removed.
     fn flux_nodes(&self, t: f64, out: &mut FluxNodes<3>) {
         let n = out.len();
         out.append(&self.nodes);
-        if self.moves() {
-            let (s, v, a) = (
-                self.motion.displacement(t),
-                self.motion.velocity(t),
-                self.motion.acceleration(t),
-            );
+        if let Some((s, v, a)) = self.carried(t) {
             for k in n..out.len() {
                 out.pos[k] += s;
                 out.wall_vel[k] = v;
@@ -260,6 +260,8 @@ impl Boundary<3> for SurfaceWall {
             }
         }
     }
+    /// A particle found on the solid side is put back on the fluid side, a quarter spacing off the tangent
+    /// plane, its velocity into the wall removed.
     fn keep_out(&self, t: f64, x: &mut V3, u: &mut V3) -> bool {
         let Some((d, n)) = self.signed_distance_at(t, x) else {
             return false;
